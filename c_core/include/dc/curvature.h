@@ -1,0 +1,48 @@
+/* Contact geometry of smooth convex bodies: principal curvatures of an
+   implicit surface f(x) = 0 (f < 0 inside) from its gradient and Hessian, and
+   the relative principal radii of two touching surfaces (review Eqs. 3-10).
+
+   The curvature form of a body on a tangent basis (u, v) of the contact plane
+   is II = [u.Hu, u.Hv; v.Hu, v.Hv] / |grad f|; its eigenvalues are the
+   principal curvatures (positive for a convex body). The relative curvature
+   of two bodies is the sum of their forms on one common basis; its
+   eigenvalues are 1/R_major <= 1/R_minor. This is review Eqs. 3-4 without
+   the angle: Eqs. 3-4 are the eigenvalues of the sum of two 2x2 forms whose
+   principal axes make the angle omega. A plane has the zero form. */
+#ifndef DC_CURVATURE_H
+#define DC_CURVATURE_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A unit tangent basis (u, v) of the plane normal to the unit vector n,
+   right-handed with n. */
+void dc_tangent_basis(const double n[3], double u[3], double v[3]);
+
+/* Curvature form (uu, uv, vv) of the level surface of f through a point,
+   from grad f and the symmetric Hessian (row-major 3x3) there, on the basis
+   (u, v). DC_EDOM if |grad f| is 0 or not finite. */
+int dc_curvature_form(const double grad[3], const double hess[9],
+                      const double u[3], const double v[3], double form[3]);
+
+/* Eigenvalues k1 >= k2 of a form and the angle theta of the k1 direction
+   from u (direction cos(theta) u + sin(theta) v). */
+void dc_form_principal(const double form[3], double *k1, double *k2, double *theta);
+
+/* Relative principal radii R_major >= R_minor from a relative curvature form
+   (sum of both bodies' forms). DC_EDOM when the smaller relative curvature is
+   <= 0 or not finite (flat, concave or degenerate contact): Hertz does not
+   apply. */
+int dc_form_relative_radii(const double form[3], double *R_major, double *R_minor);
+
+/* Review Eqs. 3-4: relative principal radii from the principal curvatures
+   (k1I, k2I) and (k1II, k2II) of the two bodies and the angle omega between
+   the k1 directions. Same domain as dc_form_relative_radii. */
+int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
+                      double omega, double *R_major, double *R_minor);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

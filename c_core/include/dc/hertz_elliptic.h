@@ -1,0 +1,79 @@
+/* Elliptic Hertz contact from the relative principal radii of two smooth
+   bodies (Kildashti, Dong & Yu 2023, "review", Eqs. 1-5 and 11-14).
+
+   Conventions (checked against Johnson, Contact Mechanics, Sec. 4.2):
+   - R_major >= R_minor are the relative principal radii (review Eqs. 3-4:
+     R_i = R_major, R_j = R_minor); the contact ellipse has its major semi-axis
+     a along the direction of R_major.
+   - ratio r = R_minor / R_major in (0, 1].
+   - Rc = R_major R_minor / (R_major + R_minor). Seed error: the OCR text of
+     Eq. 5 reads R_i R_j / (R_i + R_i); the circular limit F = 4/3 E* R^1/2
+     delta^3/2 (gamma = sqrt 2, Rc = R/2) fixes the denominator to R_i + R_j.
+   - Eccentricity, exact (review Eq. 13 with the ratio the right way up):
+       1 - e^2 = r E / ((1 + r) K - E)   <=>   r = (1 - e^2) D / B.
+     Seed error: Eq. 13 is printed with R_i/R_j, which under Eqs. 3-4
+     (R_i >= R_j) is >= 1 and gives e^2 < 0; it holds with R_j/R_i = r.
+     Checked by deriving B/A = R_major/R_minor from Johnson's Eqs. 4.39 and
+     by the mpmath generator tests/reference/gen_hertz_elliptic.py, where the
+     force of Eq. 1 equals the force 2/3 pi a E* delta / K of the semi-axis
+     route to 1e-30.
+   - Eq. 14 (approximate eccentricity) also takes r = R_minor/R_major.
+   - gamma = pi sqrt(2) E^1/2 / (2 K^3/2 (1-e^2)^1/2)   (Eq. 11)
+     beta  = 2 E / (K (1-e^2)^1/2)                       (Eq. 12)
+     F = 4/3 E* Rc^1/2 delta^3/2 gamma                   (Eq. 1)
+     A = pi Rc delta beta = pi a b                       (Eq. 2)
+     a^2 = 2 R_major delta D / K,  b = a (1-e^2)^1/2     (semi-axes)
+   For a circle (r = 1): e = 0, gamma = sqrt 2, beta = 2, and with R_force =
+   Rc gamma^2 = R, R_area = Rc beta = R everything reduces to spherical Hertz. */
+#ifndef DC_HERTZ_ELLIPTIC_H
+#define DC_HERTZ_ELLIPTIC_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Smallest ratio R_minor/R_major accepted (contact ellipse b/a ~ 1e-8). */
+#define DC_HERTZ_RATIO_MIN 1e-12
+
+/* Everything about a contact that depends on the geometry but not on the
+   overlap. Computed once per contact and step; the force for any overlap
+   then costs a square root. */
+typedef struct {
+  double R_major, R_minor; /* relative principal radii, R_major >= R_minor */
+  double Rc;               /* Eq. 5 */
+  double e2, m1;           /* e^2 and 1 - e^2 = (b/a)^2 */
+  double K, E, D;          /* elliptic integrals at m = e^2 */
+  double gamma, beta;      /* Eqs. 11-12 */
+  double R_force;          /* Rc gamma^2: F = 4/3 E* R_force^1/2 delta^3/2 */
+  double R_area;           /* Rc beta:    A = pi R_area delta            */
+} dc_hertz_geom;
+
+/* Contact state at one overlap. */
+typedef struct {
+  double F;      /* normal force, Eq. 1 */
+  double area;   /* contact area, Eq. 2 */
+  double a, b;   /* semi-axes of the contact ellipse, a >= b */
+  double kn;     /* tangent stiffness dF/d delta = 3/2 F / delta */
+} dc_hertz_state;
+
+/* e^2 from r = R_minor/R_major in [DC_HERTZ_RATIO_MIN, 1] by Newton's method
+   on the exact relation (Eq. 13); returns m1 = 1 - e^2 too, which keeps full
+   relative precision when e^2 -> 1. DC_EDOM outside the domain. */
+int dc_hertz_eccentricity(double ratio, double *e2, double *m1);
+
+/* e^2 from the closed-form approximation (review Eq. 14), same domain. */
+int dc_hertz_eccentricity_approx(double ratio, double *e2);
+
+/* Geometry factors from the two relative principal radii (either order).
+   Domain: radii > 0 and finite, ratio >= DC_HERTZ_RATIO_MIN. */
+int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *g);
+
+/* Force, area, semi-axes, stiffness at overlap delta >= 0 for effective
+   modulus Estar = 1 / sum (1 - nu^2)/E > 0. */
+int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta,
+                     dc_hertz_state *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

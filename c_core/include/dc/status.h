@@ -1,0 +1,22 @@
+/* Status codes shared by every c_core law (GSL style: a value plus a status). */
+#ifndef DC_STATUS_H
+#define DC_STATUS_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum {
+  DC_OK = 0,        /* result valid to the stated accuracy */
+  DC_EDOM = 1,      /* an input lies outside the documented domain; outputs untouched */
+  DC_ENOCONV = 2,   /* an iteration did not converge; outputs hold the last iterate */
+  DC_ERANGE = 3     /* result would overflow or underflow */
+} dc_status;
+
+/* Short English name of a status code, for error messages. */
+const char *dc_status_str(int status);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,68 @@
+/* Principal curvatures of implicit surfaces and relative radii of contact
+   (review Eqs. 3-10); see dc/curvature.h. */
+#include "dc/curvature.h"
+#include "dc/status.h"
+#include <math.h>
+
+void dc_tangent_basis(const double n[3], double u[3], double v[3])
+{
+  /* Frisvad / Duff et al. 2017 branchless orthonormal basis */
+  const double s = copysign(1.0, n[2]);
+  const double a = -1.0 / (s + n[2]);
+  const double b = n[0] * n[1] * a;
+  u[0] = 1.0 + s * n[0] * n[0] * a; u[1] = s * b; u[2] = -s * n[0];
+  v[0] = b; v[1] = s + n[1] * n[1] * a; v[2] = -n[1];
+}
+
+static double quad(const double H[9], const double x[3], const double y[3])
+{
+  return x[0] * (H[0] * y[0] + H[1] * y[1] + H[2] * y[2])
+       + x[1] * (H[3] * y[0] + H[4] * y[1] + H[5] * y[2])
+       + x[2] * (H[6] * y[0] + H[7] * y[1] + H[8] * y[2]);
+}
+
+int dc_curvature_form(const double grad[3], const double hess[9],
+                      const double u[3], const double v[3], double form[3])
+{
+  const double g = sqrt(grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2]);
+  if (!(g > 0.0) || !isfinite(g)) return DC_EDOM;
+  form[0] = quad(hess, u, u) / g;
+  form[1] = 0.5 * (quad(hess, u, v) + quad(hess, v, u)) / g;
+  form[2] = quad(hess, v, v) / g;
+  return DC_OK;
+}
+
+void dc_form_principal(const double form[3], double *k1, double *k2, double *theta)
+{
+  const double mean = 0.5 * (form[0] + form[2]);
+  const double half = 0.5 * (form[0] - form[2]);
+  const double r = hypot(half, form[1]);
+  *k1 = mean + r;
+  *k2 = mean - r;
+  if (theta) *theta = 0.5 * atan2(form[1], half);
+}
+
+static int radii_from_curvatures(double k_big, double k_small, double *R_major, double *R_minor)
+{
+  if (!(k_small > 0.0) || !isfinite(k_big)) return DC_EDOM;
+  *R_major = 1.0 / k_small;
+  *R_minor = 1.0 / k_big;
+  return DC_OK;
+}
+
+int dc_form_relative_radii(const double form[3], double *R_major, double *R_minor)
+{
+  double k1, k2;
+  dc_form_principal(form, &k1, &k2, 0);
+  return radii_from_curvatures(k1, k2, R_major, R_minor);
+}
+
+int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
+                      double omega, double *R_major, double *R_minor)
+{
+  const double sum = k1I + k2I + k1II + k2II;
+  const double dI = k1I - k2I, dII = k1II - k2II;
+  const double root = sqrt(fmax(0.0, dI * dI + dII * dII + 2.0 * dI * dII * cos(2.0 * omega)));
+  /* Eq. 3: 1/R_i = (sum - root)/2, Eq. 4: 1/R_j = (sum + root)/2 */
+  return radii_from_curvatures(0.5 * (sum + root), 0.5 * (sum - root), R_major, R_minor);
+}
