@@ -1,0 +1,202 @@
+/* LIGGGHTS normal model `hertz_elliptic`: exact elliptic Hertz contact
+   (c_core: dc/hertz_elliptic.h, review Eqs. 1-14).
+
+   Deck: pair_style gran model hertz_elliptic tangential history [surface superquadric] [settings]
+         fix ID all wall/gran model hertz_elliptic tangential history [surface superquadric] ...
+   Settings (after the model keywords):
+     tangential_damping on|off   restitution damping on the tangential spring (default on)
+     limitForce on|off           clip attractive normal force from damping (default off)
+     viscoelastic on|off         Brilliantov viscoelastic dissipation instead of the
+                                 restitution-based damping (default off)
+     maxRadiusFactor X           cap on each relative principal radius, in units of the
+                                 volume-equivalent effective radius (default 100, > 1)
+   Properties: youngsModulus, poissonsRatio (always); coefficientRestitution (unless
+   viscoelastic on); viscoelasticTime peratomtypepair [s] (Brilliantov's A, with
+   viscoelastic on).
+
+   Spheres: R_force = R_area = effective radius, and the arithmetic is that of
+   stock `hertz`, so forces agree to round-off. Superquadrics: relative
+   principal radii from both surfaces' curvatures (superquadric_curvature.h),
+   then F = 4/3 E* sqrt(R_force delta) delta with R_force = Rc gamma^2 (Eq. 1),
+   normal damping and tangential stiffness as in stock `hertz` with R_force
+   and the area-equivalent radius R_area = Rc beta (Eq. 2) respectively. */
+#ifdef NORMAL_MODEL
+NORMAL_MODEL(HERTZ_ELLIPTIC,hertz_elliptic,30)
+#else
+#ifndef NORMAL_MODEL_HERTZ_ELLIPTIC_H_
+#define NORMAL_MODEL_HERTZ_ELLIPTIC_H_
+
+#include <cmath>
+#include <cstdio>
+#include "contact_models.h"
+#include "global_properties.h"
+#include "normal_model_base.h"
+#include "superquadric_curvature.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/status.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template<>
+class NormalModel<HERTZ_ELLIPTIC> : public NormalModelBase
+{
+public:
+  NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
+    NormalModelBase(lmp, hsetup, c),
+    Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
+    tangential_damping(true), limitForce(false), viscoelastic(false),
+    maxRadiusFactor(100.0), cmb(c)
+  {}
+
+  void registerSettings(Settings &settings)
+  {
+    settings.registerOnOff("tangential_damping", tangential_damping, true);
+    settings.registerOnOff("limitForce", limitForce);
+    settings.registerOnOff("viscoelastic", viscoelastic, false);
+    settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
+  }
+
+  void postSettings(IContactHistorySetup *, ContactModelBase *c)
+  {
+    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12))
+      error->all(FLERR, "Normal model hertz_elliptic: maxRadiusFactor must be in (1, 1e12]");
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    curvature.setup(lmp, c, maxRadiusFactor, "hertz_elliptic");
+#else
+    (void)c;
+#endif
+  }
+
+  void connectToProperties(PropertyRegistry &registry)
+  {
+    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model hertz_elliptic");
+    registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model hertz_elliptic");
+    registry.connect("Yeff", Yeff, "model hertz_elliptic");
+    registry.connect("Geff", Geff, "model hertz_elliptic");
+    if (viscoelastic) {
+      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, "model hertz_elliptic");
+      registry.connect("viscoelasticTime", viscoelasticTime, "model hertz_elliptic");
+    } else {
+      registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model hertz_elliptic");
+      registry.connect("betaeff", betaeff, "model hertz_elliptic");
+    }
+  }
+
+  inline double stressStrainExponent() { return 1.5; }
+
+  inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  {
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const int itype = sidata.itype;
+    const int jtype = sidata.jtype;
+    const double deltan = sidata.deltan;
+    const double meff = sidata.meff;
+
+    /* R_force and R_area: the effective radius for spheres (stock hertz) */
+    double r_force = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+    double r_area = r_force;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (sidata.is_non_spherical && atom->superquadric_flag)
+      ellipticRadii(sidata, r_force, r_area);
+#endif
+
+    const double sqrtval = sqrt(r_force * deltan);
+    const double Sn = 2. * Yeff[itype][jtype] * sqrtval;
+    const double St = 8. * Geff[itype][jtype] * (r_area == r_force ? sqrtval : sqrt(r_area * deltan));
+    double kn = 4. / 3. * Yeff[itype][jtype] * sqrtval;
+    double kt = St;
+    double gamman, gammat;
+    if (viscoelastic) {
+      /* Brilliantov: F_dis = A d(delta)/dt dF/d(delta) (review Eq. 37) */
+      const double A = viscoelasticTime[itype][jtype];
+      gamman = A * Sn;
+      gammat = tangential_damping ? A * St : 0.0;
+    } else {
+      const double sqrtFiveOverSix = 0.91287092917527685576161630466800355658790782499663875;
+      gamman = -2. * sqrtFiveOverSix * betaeff[itype][jtype] * sqrt(Sn * meff);
+      gammat = tangential_damping ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * sqrt(St * meff) : 0.0;
+    }
+    kn /= force->nktv2p;
+    kt /= force->nktv2p;
+
+    double Fn = -gamman * sidata.vn + kn * deltan;
+    if (limitForce && Fn < 0.0) Fn = 0.0;
+
+    sidata.Fn = Fn;
+    sidata.kn = kn;
+    sidata.kt = kt;
+    sidata.gamman = gamman;
+    sidata.gammat = gammat;
+
+    const double Fn_ = sidata.is_wall ? Fn * sidata.area_ratio : Fn;
+    const double F[3] = {Fn_ * sidata.en[0], Fn_ * sidata.en[1], Fn_ * sidata.en[2]};
+    for (int k = 0; k < 3; k++) i_forces.delta_F[k] += F[k];
+    if (!sidata.is_wall)
+      for (int k = 0; k < 3; k++) j_forces.delta_F[k] -= F[k];
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+    if (sidata.is_non_spherical) {
+      /* a normal force off the centre line produces torque */
+      double xc[3], t[3];
+      const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
+      vectorSubtract3D(sidata.contact_point, atom->x[sidata.i], xc);
+      vectorCross3D(xc, Fi, t);
+      for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
+      if (!sidata.is_wall) {
+        vectorSubtract3D(sidata.contact_point, atom->x[sidata.j], xc);
+        vectorCross3D(xc, Fi, t);
+        for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
+      }
+    }
+#endif
+  }
+
+  void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
+  {
+    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+  }
+  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  /* Force- and area-equivalent radii Rc gamma^2 and Rc beta of the contact. */
+  void ellipticRadii(const SurfacesIntersectData &sidata, double &r_force, double &r_area)
+  {
+    double R_major, R_minor;
+    curvature.relativeRadii(lmp, sidata, R_major, R_minor, "hertz_elliptic");
+    dc_hertz_geom g;
+    const int st = dc_hertz_geometry(R_major, R_minor, &g);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Normal model hertz_elliptic: relative radii %g, %g: %s", R_major, R_minor, dc_status_str(st));
+      error->one(FLERR, msg);
+    }
+    r_force = g.R_force;
+    r_area = g.R_area;
+  }
+#endif
+
+  static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
+  }
+
+  double **Yeff;
+  double **Geff;
+  double **betaeff;
+  double **viscoelasticTime;
+  bool tangential_damping;
+  bool limitForce;
+  bool viscoelastic;
+  double maxRadiusFactor;
+  class ContactModelBase *cmb;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  SuperquadricCurvature curvature;
+#endif
+};
+
+}
+}
+#endif
+#endif

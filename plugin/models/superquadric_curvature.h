@@ -1,0 +1,97 @@
+/* Relative principal radii of a superquadric contact, for the elliptic
+   normal models. Reads the contact point that LIGGGHTS' `surface
+   superquadric` model (or the superquadric wall code) found, evaluates each
+   body's shape-function gradient and Hessian there with LIGGGHTS' own
+   Superquadric class, and hands them to c_core (dc/curvature.h). Plane walls
+   contribute zero curvature. No physics here: only data plumbing. */
+#ifndef DC_PLUGIN_SUPERQUADRIC_CURVATURE_H
+#define DC_PLUGIN_SUPERQUADRIC_CURVATURE_H
+
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+
+#include "atom.h"
+#include "contact_interface.h"
+#include "contact_models.h"
+#include "error.h"
+#include "superquadric.h"
+#include "dc/curvature.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+class SuperquadricCurvature {
+public:
+  SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0) {}
+
+  /* Call from postSettings. `model` names the normal model in messages. */
+  void setup(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb, double max_radius_factor, const char *model)
+  {
+    if (!lmp->atom->superquadric_flag) return;
+    alpha_i_offset_ = cmb->get_history_offset("alpha1_offset");
+    alpha_j_offset_ = cmb->get_history_offset("alpha2_offset");
+    if (alpha_i_offset_ < 0 || alpha_j_offset_ < 0) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Normal model %s with atom_style superquadric needs 'surface superquadric' in the same pair_style gran / fix wall/gran line", model);
+      lmp->error->all(FLERR, msg);
+    }
+    max_radius_factor_ = max_radius_factor;
+  }
+
+  /* Relative principal radii R_major >= R_minor at this contact. Each
+     relative principal radius is capped at maxRadiusFactor times the
+     volume-equivalent effective radius (flat superquadric faces have zero
+     curvature). Ends the run on a degenerate (zero or non-finite) gradient. */
+  void relativeRadii(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &sidata,
+                     double &R_major, double &R_minor, const char *model)
+  {
+    LAMMPS_NS::Atom *atom = lmp->atom;
+    double u[3], v[3], form[3], form_j[3];
+    dc_tangent_basis(sidata.en, u, v);
+    if (sidata.is_wall) {
+      bodyForm(atom, sidata.i, sidata.contact_point, u, v, form, lmp, model);
+    } else {
+      const double ai = sidata.contact_history[alpha_i_offset_];
+      const double aj = sidata.contact_history[alpha_j_offset_];
+      double pi[3], pj[3];
+      for (int k = 0; k < 3; k++) {
+        pi[k] = sidata.contact_point[k] - ai * sidata.en[k];
+        pj[k] = sidata.contact_point[k] + aj * sidata.en[k];
+      }
+      bodyForm(atom, sidata.i, pi, u, v, form, lmp, model);
+      bodyForm(atom, sidata.j, pj, u, v, form_j, lmp, model);
+      form[0] += form_j[0]; form[1] += form_j[1]; form[2] += form_j[2];
+    }
+    double k1, k2;
+    dc_form_principal(form, &k1, &k2, 0);
+    const double reff = sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
+    const double k_min = 1.0 / (max_radius_factor_ * reff);
+    R_minor = 1.0 / (k1 > k_min ? k1 : k_min);
+    R_major = 1.0 / (k2 > k_min ? k2 : k_min);
+  }
+
+private:
+  void bodyForm(LAMMPS_NS::Atom *atom, int i, const double *p, const double *u, const double *v,
+                double *form, LAMMPS_NS::LAMMPS *lmp, const char *model)
+  {
+    Superquadric sq(atom->x[i], atom->quaternion[i], atom->shape[i], atom->blockiness[i]);
+    double pl[3], ul[3], vl[3], f, g[3], H[9];
+    sq.global2local(p, pl);
+    sq.rotate_global2local(u, ul);
+    sq.rotate_global2local(v, vl);
+    sq.shape_function_props_local(pl, &f, g, H);
+    if (dc_curvature_form(g, H, ul, vl, form) != 0) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Normal model %s: degenerate curvature at the contact point of atom %d (shape-function gradient zero or not finite)", model, (int)atom->tag[i]);
+      lmp->error->one(FLERR, msg);
+    }
+  }
+
+  int alpha_i_offset_, alpha_j_offset_;
+  double max_radius_factor_;
+};
+
+}
+}
+
+#endif
+#endif

@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs what the project needs (Debian packages, the LIGGGHTS source) and
+# builds c_core, the tools and a LIGGGHTS executable with the plugin models
+# into build/. Re-running reuses build/ and ccache: only what changed rebuilds.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+
+packages="build-essential cmake ccache dpkg-dev patch xz-utils libopenmpi-dev openmpi-bin libgsl-dev python3"
+missing=""
+for p in $packages; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"
+done
+if [ -n "$missing" ]; then
+  echo "setup: installing Debian packages:$missing"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -q >/dev/null
+  apt-get install -y -q $missing >/dev/null
+fi
+
+"$root/plugin/fetch_liggghts.sh" "$root/.deps/liggghts-3.8.0"
+
+mkdir -p "$root/build"
+export CCACHE_BASEDIR="$root"
+export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-4G}
+cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DDC_WITH_LIGGGHTS=ON \
+      -DLIGGGHTS_SOURCE_DIR="$root/.deps/liggghts-3.8.0" \
+      -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >"$root/build/configure.log" 2>&1 \
+  || { cat "$root/build/configure.log"; exit 1; }
+echo "setup: building (first build of LIGGGHTS takes several minutes on 2 cores; log in build/build.log)"
+if ! cmake --build "$root/build" -j"$(nproc)" >"$root/build/build.log" 2>&1; then
+  grep -E "error|Error" "$root/build/build.log" | head -40
+  echo "setup: build failed, see build/build.log" >&2
+  exit 1
+fi
+echo "setup: built $root/build/bin/liggghts and $root/build/c_core/dclaw"
