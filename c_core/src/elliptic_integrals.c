@@ -3,7 +3,11 @@
      K = pi / (2 a_N),  K - E = K sum_{n>=0} 2^(n-1) c_n^2   (Abramowitz-Stegun 17.6).
    Writing t_n = c_n / m (n >= 1, t_1 = 1/(4 a_1), t_{n+1} = m t_n^2/(4 a_{n+1}))
    and S = sum_{n>=1} 2^(n-1) t_n^2 gives, with no cancellation at m -> 0:
-     D = K (1/2 + m S),  B = K (1/2 - m S),  C = 2 K S,  E = K - m D. */
+     D = K (1/2 + m S),  B = K (1/2 - m S),  C = 2 K S,  E = K - m D.
+   As m -> 1, E = K - m D cancels (log10 K digits lost); there Legendre's
+   relation E K' + E' K - K K' = pi/2 (A-S 17.3.13) with the complementary
+   K' = K(m1), D' = D(m1) gives E = pi/(2K') + m1 K D'/K' without cancellation,
+   and B = (E - m1 K)/m. */
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
 #include <math.h>
@@ -33,16 +37,27 @@ static void ellint_agm(double m, double m1, dc_ellint *out)
   out->E = K * (1.0 - m * (0.5 + m * S));
 }
 
+static void ellint_all(double m, double m1, dc_ellint *out)
+{
+  ellint_agm(m, m1, out);
+  if (m1 < 0.1) {
+    dc_ellint c;
+    ellint_agm(m1, m, &c);
+    out->E = M_PI / (2.0 * c.K) + m1 * out->K * c.D / c.K;
+    out->B = (out->E - m1 * out->K) / m;
+  }
+}
+
 int dc_ellint_m(double m, dc_ellint *out)
 {
   if (!(m >= 0.0 && m < 1.0)) return DC_EDOM;
-  ellint_agm(m, 1.0 - m, out);
+  ellint_all(m, 1.0 - m, out);
   return DC_OK;
 }
 
 int dc_ellint_m1(double m1, dc_ellint *out)
 {
   if (!(m1 > 0.0 && m1 <= 1.0)) return DC_EDOM;
-  ellint_agm(1.0 - m1, m1, out);
+  ellint_all(1.0 - m1, m1, out);
   return DC_OK;
 }

@@ -1,0 +1,85 @@
+/* Elliptic Hertz: eccentricity, gamma, beta, force and semi-axes against the
+   mpmath table (tests/reference/hertz_elliptic.csv), the circular limit, and
+   the approximate eccentricity of review Eq. 14. */
+#include "check.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/status.h"
+
+int main(void)
+{
+  FILE *f = check_open_reference("hertz_elliptic.csv");
+  if (!f) return check_summary("hertz_elliptic");
+  char line[512];
+  int rows = 0;
+  double worst_eq14 = 0.0;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#') continue;
+    double r, e2, m1, gamma, beta, F, a, b;
+    if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &r, &e2, &m1, &gamma, &beta, &F, &a, &b) != 8) continue;
+    char what[64];
+    dc_hertz_geom g;
+    CHECK(dc_hertz_geometry(1.0, r, &g) == DC_OK);
+    snprintf(what, sizeof what, "m1(r=%g)", r); CHECK_REL(g.m1, m1, 1e-14, what);
+    /* e^2 -> 0 as r -> 1: e^2 is as precise as 1 - r, which is 1e-16 absolute */
+    snprintf(what, sizeof what, "e2(r=%g)", r); CHECK_ABS(g.e2, e2, 4e-16, what);
+    snprintf(what, sizeof what, "gamma(r=%g)", r); CHECK_REL(g.gamma, gamma, 4e-15, what);
+    snprintf(what, sizeof what, "beta(r=%g)", r); CHECK_REL(g.beta, beta, 4e-15, what);
+    dc_hertz_state s;
+    CHECK(dc_hertz_contact(&g, 1.0, 1e-4, &s) == DC_OK);
+    snprintf(what, sizeof what, "force(r=%g)", r); CHECK_REL(s.F, F, 4e-15, what);
+    snprintf(what, sizeof what, "a(r=%g)", r); CHECK_REL(s.a, a, 4e-15, what);
+    snprintf(what, sizeof what, "b(r=%g)", r); CHECK_REL(s.b, b, 4e-15, what);
+    /* area pi a b, stiffness 3/2 F/delta */
+    snprintf(what, sizeof what, "area(r=%g)", r); CHECK_REL(s.area, M_PI * a * b, 4e-15, what);
+    snprintf(what, sizeof what, "kn(r=%g)", r); CHECK_REL(s.kn, 1.5 * F / 1e-4, 4e-15, what);
+    double e2_14;
+    CHECK(dc_hertz_eccentricity_approx(r, &e2_14) == DC_OK);
+    double err = fabs(sqrt(1.0 - e2_14) - sqrt(m1)) / sqrt(m1);   /* in b/a */
+    if (err > worst_eq14) worst_eq14 = err;
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows >= 12);
+  /* Eq. 14 is an approximation: b/a within 2.5% from r = 1 to 1e-12 */
+  printf("review Eq. 14: worst relative error of b/a over the table: %.3g\n", worst_eq14);
+  CHECK(worst_eq14 < 0.025);
+
+  /* circular limit (review R_c convention): gamma = sqrt 2, beta = 2, and
+     spherical Hertz F = 4/3 E* R^1/2 delta^3/2, a^2 = R delta */
+  dc_hertz_geom g;
+  CHECK(dc_hertz_geometry(0.003, 0.003, &g) == DC_OK);
+  CHECK(g.gamma == M_SQRT2 && g.beta == 2.0 && g.e2 == 0.0);
+  CHECK_REL(g.Rc, 0.0015, 1e-16, "Rc circle");
+  dc_hertz_state s;
+  dc_hertz_contact(&g, 7e9, 2e-6, &s);
+  CHECK_REL(s.F, 4.0 / 3.0 * 7e9 * sqrt(0.003) * pow(2e-6, 1.5), 2e-16, "sphere force");
+  CHECK_REL(s.a * s.a, 0.003 * 2e-6, 4e-16, "sphere contact radius");
+  CHECK_REL(s.area, M_PI * 0.003 * 2e-6, 2e-16, "sphere area");
+  /* order of the radii does not matter */
+  dc_hertz_geom g1, g2;
+  dc_hertz_geometry(2.0, 0.7, &g1);
+  dc_hertz_geometry(0.7, 2.0, &g2);
+  CHECK(g1.gamma == g2.gamma && g1.R_major == 2.0);
+
+  /* domain: status codes, no NaN */
+  double e2, m1;
+  CHECK(dc_hertz_geometry(1.0, 0.0, &g) == DC_EDOM);
+  CHECK(dc_hertz_geometry(1.0, -1.0, &g) == DC_EDOM);
+  CHECK(dc_hertz_geometry(1.0 / 0.0, 1.0, &g) == DC_EDOM);
+  CHECK(dc_hertz_geometry(1.0, 1e-13, &g) == DC_EDOM);
+  CHECK(dc_hertz_eccentricity(1.5, &e2, &m1) == DC_EDOM);
+  CHECK(dc_hertz_contact(&g1, 1e9, -1e-9, &s) == DC_EDOM);
+  CHECK(dc_hertz_contact(&g1, 0.0, 1e-9, &s) == DC_EDOM);
+  /* dense sweep of ratios: converged, finite, monotone in r */
+  int ok = 1;
+  double prev_gamma = 1e300;
+  for (int i = 0; i <= 4000; i++) {
+    const double r = pow(10.0, -12.0 * i / 4000.0);
+    if (dc_hertz_geometry(1.0, r, &g) != DC_OK) { ok = 0; break; }
+    ok &= isfinite(g.gamma) && isfinite(g.beta) && g.m1 > 0.0 && g.m1 <= 1.0;
+    ok &= i == 0 || g.gamma >= prev_gamma;   /* gamma grows as r falls */
+    prev_gamma = g.gamma;
+  }
+  CHECK(ok);
+  return check_summary("hertz_elliptic");
+}
