@@ -44,7 +44,7 @@
      arithmetic (gw_integrals_cheb.h); for h < -10 the asymptotic series
      F_n = sum_j C(n,2j) (2j-1)!! |h|^{n-2j} (omitted tail ~ phi(h) < 1e-22);
      for h >= 20 the asymptotic series G_n = sum_k (-1/2)^k/k!
-     Gamma(n+2k+1) h^-(n+2k+1). Relative error ~1e-16 (tested < 4e-16 over
+     Gamma(n+2k+1) h^-(n+2k+1). Relative error ~1e-16 (tested < 8e-16 over
      the committed table), no allocation, no GSL.
    - dc_gw_F_closed: the Bessel closed forms above via GSL's fractional-
      order K_nu and I_nu (GSL is used because C has no fractional-order
