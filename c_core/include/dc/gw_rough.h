@@ -1,0 +1,51 @@
+/* Greenwood-Williamson rough contact of two non-spherical bodies, smooth-GW
+   (non-adhesive) variant: review Eqs. 29-36 and Table 4 "non-smooth".
+
+     F = 4/3 n_asp E* Rc^1/2 sigma^3/2 gamma F_3/2(h)      (Eqs. 31, 33, 35)
+     A = pi  n_asp Rc sigma beta F_1(h)                      (Eqs. 32, 34, 36)
+     h = d/sigma = -delta/sigma
+
+   with Rc, gamma, beta from the elliptic Hertz geometry (dc_hertz_geom,
+   review Eqs. 5, 11-12), n_asp = N A_n the number of summits in the nominal
+   area, sigma the rms summit height of the combined surface and delta the
+   overlap of the nominal (mean) surfaces, > 0 in compression (DEM sign; the
+   review's separation d is -delta). gamma* = gamma F_3/2(h) and
+   beta* = beta F_1(h) are the review's Eqs. 35-36 (Eq. 36 corrected, see
+   dc/gw_integrals.h). Dimensions: n_asp [-], E* Rc^1/2 sigma^3/2 [N],
+   Rc sigma [m^2].
+
+   Smooth limit: as sigma -> 0 at fixed delta > 0, h -> -inf and
+   sigma^3/2 F_3/2(h) = delta^3/2 (1 + 3 sigma^2/(8 delta^2) + ...),
+   sigma F_1(h) -> delta, so F -> n_asp x (elliptic Hertz force) and
+   A -> n_asp x (Hertz area); with n_asp = 1 this is exactly
+   dc_hertz_contact. For sigma <= 1e-80 delta (correction < 1e-160) and for
+   sigma = 0 the Hertz expressions are used directly, so the limit is exact.
+
+   The review builds the summit-scale law on the body-scale Rc (Eq. 31 puts
+   Rc where the GW model has the summit radius): the law is implemented as
+   printed, and n_asp absorbs the summit density. Hot path: no allocation. */
+#ifndef DC_GW_ROUGH_H
+#define DC_GW_ROUGH_H
+
+#include "dc/hertz_elliptic.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+  double F;      /* normal force [N] */
+  double area;   /* real contact area [m^2] */
+  double kn;     /* dF/d delta = 2 n_asp E* Rc^1/2 sigma^1/2 gamma F_1/2(h) [N/m] */
+  double h;      /* standardised separation -delta/sigma (-inf reported as -1e300) */
+} dc_gw_rough_state;
+
+/* Domain: Estar > 0, n_asp > 0, sigma >= 0, all finite; delta finite (any
+   sign; with sigma = 0 and delta <= 0 the force is 0). DC_EDOM otherwise. */
+int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
+                         double sigma, double delta, dc_gw_rough_state *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

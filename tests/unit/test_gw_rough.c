@@ -1,0 +1,98 @@
+/* Elliptic GW rough contact (review Eqs. 29-36) and the rough tangential
+   stiffness (Eqs. 78-84): smooth limits against elliptic Hertz / Mindlin,
+   reference values from the mpmath table, stiffness = dF/d delta, domain. */
+#include "check.h"
+#include "dc/gw_rough.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/rough_tangential.h"
+#include "dc/status.h"
+#include <stdlib.h>
+#include <string.h>
+
+/* F_n(h) from tests/reference/gw_integrals.csv (mpmath quadrature) */
+static double ref_F(double n, double h)
+{
+  FILE *f = check_open_reference("gw_integrals.csv");
+  if (!f) return NAN;
+  char line[256];
+  double v = NAN;
+  while (fgets(line, sizeof line, f)) {
+    if (line[0] == '#' || line[0] == 'n') continue;
+    double nn = strtod(strtok(line, ","), 0), hh = strtod(strtok(0, ","), 0);
+    if (nn == n && hh == h) { v = strtod(strtok(0, ",\n"), 0); break; }
+  }
+  fclose(f);
+  return v;
+}
+
+int main(void)
+{
+  const double Estar = 7e10, sigma = 1e-7;
+  const double radii[][2] = {{1e-3, 1e-3}, {2e-3, 5e-4}, {1.0, 1e-4}};
+  for (int c = 0; c < 3; c++) {
+    dc_hertz_geom g;
+    CHECK(dc_hertz_geometry(radii[c][0], radii[c][1], &g) == DC_OK);
+    dc_hertz_state hs;
+    dc_gw_rough_state rs;
+    /* sigma -> 0: smooth elliptic Hertz, exactly at sigma = 0, and before
+       with the next terms of F_3/2(h) = |h|^3/2 (1 + 3/(8h^2) + 27/(384h^4))
+       (binomial series of E[(Z + |h|)^3/2]) */
+    const double delta = 1e-5;
+    dc_hertz_contact(&g, Estar, delta, &hs);
+    CHECK(dc_gw_rough_elliptic(&g, Estar, 1.0, 0.0, delta, &rs) == DC_OK);
+    CHECK_REL(rs.F, hs.F, 2e-16, "sigma = 0: force = Hertz");
+    CHECK_REL(rs.area, hs.area, 2e-16, "sigma = 0: area = Hertz");
+    CHECK_REL(rs.kn, hs.kn, 2e-16, "sigma = 0: stiffness = Hertz");
+    const double sig[] = {1e-8, 1e-10, 1e-12, 1e-14};  /* x^6 term < 1e-19 */
+    for (int k = 0; k < 4; k++) {
+      CHECK(dc_gw_rough_elliptic(&g, Estar, 1.0, sig[k], delta, &rs) == DC_OK);
+      const double x = sig[k] / delta;
+      CHECK_REL(rs.F, hs.F * (1 + 0.375 * x * x + 27.0 / 384 * x * x * x * x), 4e-15, "sigma -> 0: force -> Hertz");
+      CHECK_REL(rs.area, hs.area, 4e-15, "sigma -> 0: area -> Hertz");
+    }
+    /* reference values: h = -2 and h = +1 from the quadrature table */
+    const double hs_[] = {-2.0, 1.0};
+    for (int k = 0; k < 2; k++) {
+      const double d = -hs_[k] * sigma;
+      CHECK(dc_gw_rough_elliptic(&g, Estar, 250.0, sigma, d, &rs) == DC_OK);
+      const double Fw = 250.0 * 4.0 / 3.0 * Estar * sqrt(g.Rc) * pow(sigma, 1.5) * g.gamma * ref_F(1.5, hs_[k]);
+      const double Aw = 250.0 * M_PI * g.Rc * sigma * g.beta * ref_F(1.0, hs_[k]);
+      CHECK_REL(rs.F, Fw, 2e-15, "rough force vs table F_3/2");
+      CHECK_REL(rs.area, Aw, 2e-15, "rough area vs table F_1");
+      /* stiffness = dF/d delta (central difference, step 1e-4 sigma) */
+      dc_gw_rough_state p, m;
+      dc_gw_rough_elliptic(&g, Estar, 250.0, sigma, d + 1e-4 * sigma, &p);
+      dc_gw_rough_elliptic(&g, Estar, 250.0, sigma, d - 1e-4 * sigma, &m);
+      CHECK_REL(rs.kn, (p.F - m.F) / (2e-4 * sigma), 1e-8, "kn = dF/d delta");
+    }
+    /* separated far beyond the summits: zero force, finite */
+    CHECK(dc_gw_rough_elliptic(&g, Estar, 1.0, sigma, -100 * sigma, &rs) == DC_OK);
+    CHECK(rs.F == 0.0 && rs.area == 0.0);
+  }
+  /* domain */
+  dc_hertz_geom g;
+  dc_hertz_geometry(1e-3, 1e-3, &g);
+  dc_gw_rough_state rs;
+  CHECK(dc_gw_rough_elliptic(&g, -1, 1, 1e-7, 1e-6, &rs) == DC_EDOM);
+  CHECK(dc_gw_rough_elliptic(&g, 1e9, 0, 1e-7, 1e-6, &rs) == DC_EDOM);
+  CHECK(dc_gw_rough_elliptic(&g, 1e9, 1, -1e-7, 1e-6, &rs) == DC_EDOM);
+  CHECK(dc_gw_rough_elliptic(&g, 1e9, 1, 1e-7, NAN, &rs) == DC_EDOM);
+
+  /* tangential: circle chi = 4/(pi (2 - nu)); sigma -> 0 gives Mindlin
+     k_t = 8 G a/(2 - nu) with a = sqrt(R delta) */
+  const double nu = 0.3, G = 3e10, R = 1e-3, delta = 1e-6;
+  double chi, kt;
+  CHECK(dc_mindlin_chi(&g, nu, 0.7, &chi) == DC_OK);
+  CHECK_REL(chi, 4.0 / (M_PI * (2 - nu)), 1e-15, "chi, circle");
+  CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, R, 0.0, delta, &kt) == DC_OK);
+  CHECK_REL(kt, 8 * G * sqrt(R * delta) / (2 - nu), 1e-15, "sigma = 0: Mindlin");
+  CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, R, 1e-6 * delta, delta, &kt) == DC_OK);
+  /* F_1/2(h) = |h|^1/2 (1 - 1/(8 h^2) + ...) */
+  CHECK_REL(kt, 8 * G * sqrt(R * delta) / (2 - nu) * (1 - 0.125e-12), 1e-15, "sigma -> 0: Mindlin");
+  CHECK(dc_rough_tangential_stiffness(G, chi, 40.0, R, 1e-7, 1e-7, &kt) == DC_OK);
+  CHECK_REL(kt, 2 * M_PI * 40 * G * chi * sqrt(R * 1e-7) * ref_F(0.5, -1.0), 2e-15, "k_t vs table F_1/2(-1)");
+  CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, R, 0.0, -1e-6, &kt) == DC_OK && kt == 0.0);
+  CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, -R, 1e-7, 1e-6, &kt) == DC_EDOM);
+  CHECK(dc_mindlin_chi(&g, 0.6, 0.0, &chi) == DC_EDOM);
+  return check_summary("gw_rough");
+}
