@@ -13,6 +13,7 @@
 #include "contact_interface.h"
 #include "contact_models.h"
 #include "error.h"
+#include "math_extra_liggghts_nonspherical.h"
 #include "superquadric.h"
 #include "dc/curvature.h"
 
@@ -76,8 +77,8 @@ private:
     Superquadric sq(atom->x[i], atom->quaternion[i], atom->shape[i], atom->blockiness[i]);
     double pl[3], ul[3], vl[3], f, g[3], H[9];
     sq.global2local(p, pl);
-    sq.rotate_global2local(u, ul);
-    sq.rotate_global2local(v, vl);
+    MathExtraLiggghtsNonspherical::transpose_matvec(sq.rotation_matrix, u, ul);
+    MathExtraLiggghtsNonspherical::transpose_matvec(sq.rotation_matrix, v, vl);
     sq.shape_function_props_local(pl, &f, g, H);
     if (dc_curvature_form(g, H, ul, vl, form) != 0) {
       char msg[256];

@@ -1,0 +1,91 @@
+"""Helpers shared by the regression checks: run a LIGGGHTS deck, read its
+column outputs, compare against committed references and analytic values,
+and report 'N passed, N failed'."""
+import math
+import os
+import shutil
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+LIGGGHTS = os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))
+
+
+class Checks:
+    def __init__(self, name):
+        self.name, self.passed, self.failed = name, 0, 0
+
+    def true(self, ok, what):
+        if ok:
+            self.passed += 1
+        else:
+            self.failed += 1
+        print("%s %s" % ("ok  " if ok else "FAIL", what))
+
+    def rel(self, got, want, tol, what):
+        err = abs(got - want) / max(abs(want), 1e-300)
+        self.true(math.isfinite(got) and err <= tol, "%s: got %.12g want %.12g rel.err %.3g (tol %.3g)" % (what, got, want, err, tol))
+
+    def finish(self):
+        print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
+        sys.exit(1 if self.failed else 0)
+
+
+def run(deck, workdir, ranks=1, variables=None, tag="run"):
+    """Runs `deck` (path under inputs/) in workdir; returns the log text."""
+    os.makedirs(workdir, exist_ok=True)
+    deck_path = os.path.join(ROOT, "inputs", deck)
+    cmd = [LIGGGHTS, "-in", deck_path, "-log", "log.%s" % tag, "-screen", "none"]
+    for k, v in (variables or {}).items():
+        cmd += ["-var", k, str(v)]
+    if ranks > 1:
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+    p = subprocess.run(cmd, cwd=workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    log_path = os.path.join(workdir, "log.%s" % tag)
+    log = open(log_path).read() if os.path.exists(log_path) else ""
+    if p.returncode != 0:
+        print(p.stdout[-3000:])
+        print(log[-3000:])
+        raise SystemExit("FAIL %s: LIGGGHTS exited with %d (%s)" % (deck, p.returncode, " ".join(cmd)))
+    return log
+
+
+def table(path):
+    """Whitespace-separated numeric columns, '#' comments skipped."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                rows.append([float(x) for x in line.split()])
+    return rows
+
+
+def compare_tables(checks, got, want, tol, what):
+    """Row-by-row relative comparison (scale: column max) of two tables."""
+    if len(got) != len(want) or not got:
+        checks.true(False, "%s: %d rows, reference has %d" % (what, len(got), len(want)))
+        return
+    ncol = len(want[0])
+    scale = [max(abs(r[c]) for r in want) or 1.0 for c in range(ncol)]
+    worst = max(abs(g[c] - w[c]) / scale[c] for g, w in zip(got, want) for c in range(ncol))
+    checks.true(worst <= tol, "%s: worst column-scaled difference %.3g (tol %.3g)" % (what, worst, tol))
+
+
+def save_reference(src, dst, every=1):
+    """Copies a table keeping every n-th data row (used by --update)."""
+    os.makedirs(os.path.dirname(dst), exist_ok=True)
+    with open(src) as f, open(dst, "w") as g:
+        k = 0
+        for line in f:
+            if line.startswith("#"):
+                g.write(line)
+            elif line.strip():
+                if k % every == 0:
+                    g.write(line)
+                k += 1
+
+
+def subsample(rows, every):
+    return rows[::every]
