@@ -15,7 +15,7 @@
 
 dc_gw_solve_opts dc_gw_solve_default_opts(void)
 {
-  dc_gw_solve_opts o = {1.0, DC_GW_FORCE_FULL, DC_GW_F32_EXACT, 1e-14, 50};
+  dc_gw_solve_opts o = {1.0, DC_GW_FORCE_FULL, DC_GW_F32_EXACT, 1e-12, 50};
   return o;
 }
 
