@@ -6,6 +6,7 @@
 #include <string.h>
 
 static const dc_cli_command commands[] = {
+  {"gw_rough", cmd_gw_rough, "GW rough contact: radii, E*, sigma, n_asp, mu, overlaps -> elliptic closed-form and Feng-law force, area, stiffness"},
   {"hertz_elliptic", cmd_hertz_elliptic, "elliptic Hertz: radii or curvatures, E*, overlaps -> e^2, gamma, beta, semi-axes, force, area, stiffness"},
 };
 
