@@ -26,6 +26,7 @@ double dc_cli_get(const dc_cli_option *opts, const char *key);
 int dc_cli_given(const dc_cli_option *opts, const char *key);
 
 int cmd_hertz_elliptic(int argc, char **argv);
+int cmd_jkr_elliptic(int argc, char **argv);
 int cmd_gw_rough(int argc, char **argv);
 
 #endif

@@ -7,6 +7,7 @@
 
 static const dc_cli_command commands[] = {
   {"gw_rough", cmd_gw_rough, "GW rough contact: radii, E*, sigma, n_asp, mu, overlaps -> elliptic closed-form and Feng-law force, area, stiffness"},
+  {"jkr_elliptic", cmd_jkr_elliptic, "adhesive elliptic JKR (Johnson-Greenwood; classical JKR for R1 = R2): overlaps -> force, area, semi-axes; --summary 1: pull-off force, separation overlap"},
   {"hertz_elliptic", cmd_hertz_elliptic, "elliptic Hertz: radii or curvatures, E*, overlaps -> e^2, gamma, beta, semi-axes, force, area, stiffness"},
 };
 

@@ -83,10 +83,10 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
     s->delta = delta;
     return DC_OK;
   }
-  const double dbar = delta / Ds;
+  if (delta < dc_jkr_sphere_delta_break(R, Estar, w)) { zero_state(delta, s); return DC_OK; }
   const double xb = cbrt(M_PI / 8.0);          /* break: 8 x^3 = pi */
   const double dbar_b = -0.75 * M_PI * xb;     /* 2 xb^4 - pi xb     */
-  if (dbar < dbar_b) { zero_state(delta, s); return DC_OK; }
+  const double dbar = fmax(delta / Ds, dbar_b);
   /* x^4 - p x - q = 0, p = pi/2, q = dbar/2 (Ferrari). Resolvent cubic
      y^3 + q y - p^2/8 = 0; its largest root y > 0 gives
      x = ((2y)^1/2 + (p (2/y)^1/2 - 2y)^1/2) / 2, the larger real root. */
@@ -130,30 +130,45 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
 /* Elliptic contacts: the state as a function of m = e^2.               */
 
 typedef struct {
-  double m, g, rho, X, Y, abar, dbar, Pbar;     /* values                    */
+  double m, m1, g, rho, X, Y, abar, dbar, Pbar; /* values                    */
   double dg, drho, dX, dY, dabar, ddbar, dPbar; /* d/dm                      */
 } jg_point;
 
 /* dC/dm = (D - (4 - 3m) C)/(2 m (1-m)); for small m (0/0) the series of
    C = sum c_n m^n, c_0..3 = pi/16, 3pi/64, 75pi/2048, 245pi/8192. Only
    Newton steps and extremum searches use it: 1e-9 relative is plenty. */
-static double dC_dm(double m, double m1, double D, double C)
+static double dc_C_dm_(double m, double m1, double D, double C)
 {
   if (m < 1e-3) return M_PI * (3.0 / 64.0 + m * (150.0 / 2048.0 + m * (735.0 / 8192.0)));
   return (D - (4.0 - 3.0 * m) * C) / (2.0 * m * m1);
 }
 
 /* Review Eqs. 19-23 in the cancellation-free Q/u form (header comment),
-   with their derivatives in m. m in (0, 1). */
-static void jg_eval(const dc_jkr_geom *G, double m, jg_point *p)
+   with their derivatives in the solver variable v: v = m = e^2, or, for
+   slender contacts (e2_hertz > 1/2), v = m1 = 1 - e^2, which keeps full
+   relative precision of b/a when it is small. */
+static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p);
+static void jg_eval(const dc_jkr_geom *G, double v, jg_point *p)
 {
-  const double m1 = 1.0 - m;  /* exact for m >= 1/2 */
+  jg_point q;
+  if (G->use_m1) {
+    jg_eval_m(G, 1.0 - v, v, &q);
+    q.dg = -q.dg; q.drho = -q.drho; q.dX = -q.dX; q.dY = -q.dY;
+    q.dabar = -q.dabar; q.ddbar = -q.ddbar; q.dPbar = -q.dPbar;
+  } else {
+    jg_eval_m(G, v, 1.0 - v, &q);
+  }
+  *p = q;
+}
+
+static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p)
+{
   dc_ellint el;
   if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
   const double K = el.K, D = el.D, B = el.B, C = el.C;
   const double lam = G->lambda, lam2 = lam * lam;
   const double dK = 0.5 * B / m1, dD = 0.5 * (D - C) / m1, dB = 0.5 * C;
-  const double dC = dC_dm(m, m1, D, C);
+  const double dC = dc_C_dm_(m, m1, D, C);
 
   const double Del = D * B + m1 * C * D + B * C;
   const double dDel = dD * B + D * dB - C * D + m1 * (dC * D + C * dD) + dB * C + B * dC;
@@ -166,6 +181,7 @@ static void jg_eval(const dc_jkr_geom *G, double m, jg_point *p)
   const double dQ = dQn / lD - Q * dDel / Del;
   const double q4 = sqrt(sqrt(m1));                 /* g^1/2 */
   const double u = m < 0.5 ? -expm1(0.25 * log1p(-m)) : 1.0 - q4;
+  p->m1 = m1;
   const double du = 0.25 / (q4 * q4 * q4);
   const double rho = Q / u;
   const double drho = (dQ - rho * du) / u;
@@ -267,64 +283,91 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
     G->delta_pull = ap * ap / R - sqrt(2.0 * M_PI * w * ap / Estar);
     return DC_OK;
   }
-  /* Extrema of dbar(m) and Pbar(m) on (0, m_H): both derivatives are < 0
-     near m = 0 (vanishing contact) and > 0 near m_H (Hertz-like). */
-  const double mH = G->e2_hertz, m1H = 1.0 - mH;
-  const double lo = 1e-6 * mH, hi = mH - 1e-6 * fmin(mH, m1H);
-  st = brent_deriv(G, 0, lo, hi, &G->e2_break);
+  /* Solver variable v (e^2, or 1 - e^2 for slender contacts), and the
+     Hertz state polished as the zero of this file's Q (two Newton steps on
+     Qn = (1 - lambda^2) B - m (D - C), from dc_hertz_geometry's e^2). */
+  G->use_m1 = G->e2_hertz > 0.5;
+  double vH = G->use_m1 ? G->hertz.m1 : G->hertz.e2;
+  for (int i = 0; i < 2; i++) {
+    const double m = G->use_m1 ? 1.0 - vH : vH, m1 = G->use_m1 ? vH : 1.0 - vH;
+    dc_ellint el;
+    if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
+    const double dC = dc_C_dm_(m, m1, el.D, el.C);
+    const double Qn = G->l2c * el.B - m * (el.D - el.C);
+    const double dQn = G->l2c * 0.5 * el.C - (el.D - el.C) - m * (0.5 * (el.D - el.C) / m1 - dC);
+    vH -= (G->use_m1 ? -1.0 : 1.0) * Qn / dQn;
+  }
+  G->v_hertz = vH;
+  G->e2_hertz = G->use_m1 ? 1.0 - vH : vH;
+  /* Extrema of dbar and Pbar on the family: dbar -> 0- and Pbar -> 0-
+     for a vanishing contact (e^2 -> 0), both -> +oo at the Hertz end. In v
+     the derivative is < 0 towards the vanishing contact when v = e^2 and
+     > 0 when v = 1 - e^2. */
+  const double v0 = G->use_m1 ? 1.0 - 1e-6 * G->e2_hertz : 1e-6 * vH;  /* near e^2 = 0 */
+  const double v1 = G->use_m1 ? vH * (1.0 + 1e-6) : vH * (1.0 - 1e-6);  /* near Hertz   */
+  double vb, vp;
+  st = G->use_m1 ? brent_deriv(G, 0, v1, v0, &vb) : brent_deriv(G, 0, v0, v1, &vb);
   if (st != DC_OK) return st;
-  st = brent_deriv(G, 1, G->e2_break, hi, &G->e2_pull);
+  st = G->use_m1 ? brent_deriv(G, 1, v1, vb, &vp) : brent_deriv(G, 1, vb, v1, &vp);
   if (st != DC_OK) return st;
+  G->v_break = vb;
   jg_point p;
-  jg_eval(G, G->e2_break, &p);
+  jg_eval(G, vb, &p);
+  G->e2_break = p.m;
   G->delta_break = G->delta_scale * p.dbar;
   G->F_break = G->F_scale * p.Pbar;
   const double dbar_b = p.dbar;
-  jg_eval(G, G->e2_pull, &p);
+  jg_eval(G, vp, &p);
+  G->e2_pull = p.m;
   G->delta_pull = G->delta_scale * p.dbar;
   G->F_pull = G->F_scale * p.Pbar;
-  /* Starting values: m_H - m = (m_H - m_b)/(1 + c1 d^1/2 + c2 d^3/4),
-     d = dbar - dbar_b; c2 from the Hertz asymptote, c1 through the
-     pull-off point. */
-  jg_eval(G, mH, &p);
+  /* Hertz end: first-order coefficients and the switch to them */
+  jg_eval(G, vH, &p);
   G->pert_X0 = p.X;
   G->pert_g0 = p.g;
   G->pert_X1 = p.dX / p.drho;
   G->pert_g1 = p.dg / p.drho;
   G->pert_P0 = p.Y / (p.X * sqrt(p.X));
   G->pert_P1 = (p.dY * p.X - 1.5 * p.Y * p.dX) / (p.X * p.X * sqrt(p.X)) / p.drho;
-  /* rho = |drho| (m_H - m) and dbar = g^2/3 X rho^-4/3 near m_H */
-  const double span = mH - G->e2_break;
+  const double rho_sw = 1e-8 * vH * fabs(p.drho);
+  G->dbar_switch = cbrt(p.g * p.g) * p.X * pow(rho_sw, -4.0 / 3.0);
+  /* Starting values: |v_H - v| = |v_H - v_b|/(1 + c1 d^1/2 + c2 d^3/4),
+     d = dbar - dbar_b; c2 from the Hertz asymptote (rho = |drho/dv|
+     |v_H - v|, dbar = g^2/3 X rho^-4/3), c1 through the pull-off point. */
+  const double span = fabs(vH - vb);
   G->guess_c2 = span * fabs(p.drho) * pow(cbrt(p.g * p.g) * p.X, -0.75);
   const double dp = G->delta_pull / G->delta_scale - dbar_b;
-  const double need = span / (mH - G->e2_pull) - 1.0 - G->guess_c2 * pow(dp, 0.75);
+  const double need = span / fabs(vH - vp) - 1.0 - G->guess_c2 * pow(dp, 0.75);
   G->guess_c1 = need > 0.0 ? need / sqrt(dp) : 0.0;
   return DC_OK;
 }
 
 static void elliptic_fill(const dc_jkr_geom *G, const jg_point *p, double s_m, dc_jkr_state *s)
 {
-  /* s_m: remaining Newton correction in m, applied to first order */
+  /* s_m: remaining Newton correction in the solver variable, applied to
+     first order */
+  const double sg = G->use_m1 ? -1.0 : 1.0;   /* dm/dv */
   const double g = p->g + p->dg * s_m;
   const double abar = p->abar + p->dabar * s_m;
   s->contact = 1;
   s->a = G->a_scale * abar;
   s->b = g * s->a;
   s->area = M_PI * s->a * s->b;
-  s->e2 = p->m + s_m;
+  s->e2 = p->m + sg * s_m;
   s->F = G->F_scale * (p->Pbar + p->dPbar * s_m);
   s->delta = G->delta_scale * (p->dbar + p->ddbar * s_m);
-  s->kn = finite_kn(G->F_scale * p->dPbar, G->delta_scale * p->ddbar);
+  s->kn = finite_kn(sg * G->F_scale * p->dPbar, sg * G->delta_scale * p->ddbar);
 }
 
 int dc_jkr_at_eccentricity(const dc_jkr_geom *G, double e2, dc_jkr_state *s)
 {
   if (G->circular || G->w == 0.0 || !(e2 > 0.0 && e2 < G->e2_hertz)) return DC_EDOM;
   jg_point p;
-  jg_eval(G, e2, &p);
+  const double sg = G->use_m1 ? -1.0 : 1.0;
+  jg_eval(G, G->use_m1 ? 1.0 - e2 : e2, &p);
   if (!(p.rho > 0.0)) return DC_ERANGE;
   elliptic_fill(G, &p, 0.0, s);
-  if (p.ddbar <= 0.0) s->kn = finite_kn(-G->F_scale * p.dPbar, -G->delta_scale * p.ddbar);
+  if (sg * p.ddbar <= 0.0) s->kn = finite_kn(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
   return DC_OK;
 }
 
@@ -348,7 +391,7 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
   if (G->circular) return dc_jkr_sphere(G->Rhat, G->Estar, G->w, delta, s);
   if (delta < G->delta_break) { zero_state(delta, s); return DC_OK; }
   const double dbar_t = delta / G->delta_scale;
-  if (dbar_t > 1e10) {
+  if (dbar_t > G->dbar_switch) {
     /* first order in rho ~ dbar^-3/4 < 3e-8: the neglected O(rho^2) is
        below rounding */
     const double rho = sqrt(G->pert_g0) * pow(G->pert_X0, 0.75) * pow(dbar_t, -0.75);
@@ -366,56 +409,57 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
     if (hint) *hint = s->e2;
     return DC_OK;
   }
-  const double mH = G->e2_hertz, mb = G->e2_break;
+  const double vH = G->v_hertz, vb = G->v_break;
   jg_point p;
-  jg_eval(G, mb, &p);
+  jg_eval(G, vb, &p);
   const double dbar_b = p.dbar;
   const double dtarget = dbar_t - dbar_b;
   if (!(dtarget > 0.0)) {   /* exactly at the separation point */
     elliptic_fill(G, &p, 0.0, s);
     s->delta = delta;
-    if (hint) *hint = mb;
+    if (hint) *hint = vb;
     return DC_OK;
   }
-  double m;
-  if (hint && *hint > mb && *hint < mH) {
-    m = *hint;
+  double v;
+  if (hint && (*hint - vb) * (*hint - vH) < 0.0) {
+    v = *hint;
   } else {
-    m = mH - (mH - mb) / (1.0 + G->guess_c1 * sqrt(dtarget) + G->guess_c2 * pow(dtarget, 0.75));
+    v = vH - (vH - vb) / (1.0 + G->guess_c1 * sqrt(dtarget) + G->guess_c2 * pow(dtarget, 0.75));
   }
-  /* Newton on ln(dbar(m) - dbar_b) = ln(dtarget): dbar - dbar_b grows like
-     (m - m_b)^2 at the separation point and like (m_H - m)^-4/3 at the
+  /* Newton on ln(dbar(v) - dbar_b) = ln(dtarget): dbar - dbar_b grows like
+     (v - v_b)^2 at the separation point and like |v_H - v|^-4/3 at the
      Hertz end, so its logarithm is close to linear in ln of either
      distance and the iteration neither stalls at the vertical tangent nor
-     jumps past the pole. Bracketed by [m_b, m_H]. */
+     jumps past the pole. Bracketed: lo has dbar < target, hi dbar > target. */
   const double Lt = log(dtarget);
-  double lo = mb, hi = mH;
+  double lo = vb, hi = vH;
   for (int it = 0; it < 60; it++) {
-    jg_eval(G, m, &p);
+    jg_eval(G, v, &p);
     const double d = p.dbar - dbar_b;
-    if (!(d > 0.0) || !(p.ddbar > 0.0) || !(p.rho > 0.0)) {
+    const double sgn = vH > vb ? 1.0 : -1.0;   /* dbar increases along sgn */
+    if (!(d > 0.0) || !(sgn * p.ddbar > 0.0) || !(p.rho > 0.0)) {
       /* rounding at either end of the bracket: bisect */
-      if (!(p.rho > 0.0)) hi = m; else lo = m;
-      m = 0.5 * (lo + hi);
+      if (!(p.rho > 0.0)) hi = v; else lo = v;
+      v = 0.5 * (lo + hi);
       continue;
     }
-    if (p.dbar > dbar_t) hi = m; else lo = m;
+    if (p.dbar > dbar_t) hi = v; else lo = v;
     const double step = -(log(d) - Lt) * d / p.ddbar;
     const double lin = (dbar_t - p.dbar) / p.ddbar;  /* plain Newton step */
-    const double scale = fmin(mH - m, m - mb);
-    if (fabs(step) <= 1e-9 * scale || hi - lo <= 4.0 * 2.2e-16 * m) {
+    const double scale = fmin(fabs(vH - v), fabs(v - vb));
+    if (fabs(step) <= 1e-9 * scale || fabs(hi - lo) <= 4.0 * 2.2e-16 * fabs(v)) {
       elliptic_fill(G, &p, lin, s);
       s->delta = delta;
-      if (hint) *hint = m + lin;
+      if (hint) *hint = v + lin;
       return DC_OK;
     }
-    double mn = m + step;
-    if (!(mn > lo && mn < hi)) mn = 0.5 * (lo + hi);
-    m = mn;
+    double vn = v + step;
+    if (!((vn - lo) * (vn - hi) < 0.0)) vn = 0.5 * (lo + hi);
+    v = vn;
   }
-  jg_eval(G, m, &p);
+  jg_eval(G, v, &p);
   elliptic_fill(G, &p, (dbar_t - p.dbar) / p.ddbar, s);
   s->delta = delta;
-  if (hint) *hint = m;
+  if (hint) *hint = v;
   return DC_ENOCONV;
 }

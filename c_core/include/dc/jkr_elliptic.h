@@ -51,8 +51,10 @@
    F(e^2) has one minimum, the pull-off point under load control
    (F_pull < 0; the pull-off force is -F_pull). Under overlap control (DEM)
    the contact follows the large-contact branch e^2 in [e2_break, e2_hertz),
-   on which delta and F increase together (dF/d delta > 0); the
-   small-contact branch is unstable and never taken. The contact forms when
+   on which a increases with delta (the elastic-plus-surface energy is a
+   minimum in the contact size at fixed delta); F falls from F_break to
+   F_pull (dF/d delta -> -oo at the separation point) and then rises. The
+   small-contact branch is an energy maximum and is never taken. The contact forms when
    delta reaches 0 on approach and is kept, with negative overlaps, until
    delta < delta_break (dc_jkr_in_contact). For spheres: F_pull =
    -3/2 pi w R, delta_break = -3/4 (pi^2 w^2 R / Estar^2)^1/3, F_break =
@@ -87,10 +89,13 @@ typedef struct {
   double e2_break, delta_break, F_break; /* separation point (min delta)    */
   double e2_pull, delta_pull, F_pull;    /* load-controlled pull-off (min F) */
   double guess_c1, guess_c2;     /* starting-value model of the solver       */
-  /* first order in rho about the Hertz state, used where rho < ~1e-7.5
-     (delta / delta_scale > 1e10): X = X0 + X1 rho, g = g0 + g1 rho,
-     F / (F_scale dbar^3/2) = P0 + P1 rho, rho = g0^1/2 X0^3/4 dbar^-3/4 */
+  /* first order in rho about the Hertz state: X = X0 + X1 rho, g = g0 + g1 rho,
+     F / (F_scale dbar^3/2) = P0 + P1 rho, rho = g0^1/2 X0^3/4 dbar^-3/4,
+     where the distance to the Hertz state is < 1e-8 of its e^2 scale */
   double pert_X0, pert_X1, pert_g0, pert_g1, pert_P0, pert_P1;
+  double dbar_switch;            /* delta/delta_scale above which it is used */
+  int use_m1;                    /* solver variable: 1 - e^2 (slender) or e^2 */
+  double v_hertz, v_break;       /* e2_hertz, e2_break in that variable      */
 } dc_jkr_geom;
 
 /* One contact state. */

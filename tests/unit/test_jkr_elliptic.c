@@ -1,0 +1,292 @@
+/* Unit tests of c_core/src/jkr_elliptic.c against the committed mpmath
+   tables (tests/reference/gen_jkr_elliptic.py solves the contact problem
+   independently, from the potential integrals of the pressure), the exact
+   circular and Hertz limits, and the shape of the force-overlap curve. */
+#include "check.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/jkr_elliptic.h"
+#include "dc/status.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define EPS 2.220446049250313e-16
+
+/* Reads up to n doubles of one CSV row (first field may be text). */
+static int read_row(FILE *f, double *v, int n)
+{
+  char line[2048];
+  if (!fgets(line, sizeof line, f)) return 0;
+  int k = 0;
+  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
+  return k;
+}
+
+static void skip_header(FILE *f)
+{
+  char line[2048];
+  if (!fgets(line, sizeof line, f)) line[0] = 0;
+}
+
+/* Relative error allowed for F(delta): rounding in delta is amplified by the
+   condition number |delta dF/d delta / F| (infinite at the separation point,
+   where the curve has a vertical tangent), so the bound is c eps (1 + cond). */
+static double cond_tol(const dc_jkr_state *s, double c)
+{
+  double cond = fabs(s->delta * s->kn / s->F);
+  if (!(cond < 1e12)) cond = 1e12;
+  return c * EPS * (1.0 + cond);
+}
+
+static void test_sphere_table(void)
+{
+  FILE *f = check_open_reference("jkr_sphere.csv");
+  if (!f) return;
+  skip_header(f);
+  double v[6];
+  int rows = 0;
+  while (read_row(f, v, 6) == 6) {
+    const double R = v[0], E = v[1], w = v[2], delta = v[3], F = v[4], a = v[5];
+    dc_jkr_state s;
+    CHECK(dc_jkr_sphere(R, E, w, delta, &s) == DC_OK);
+    CHECK(s.contact == 1);
+    CHECK_REL(s.F, F, cond_tol(&s, 8.0), "sphere F(delta) vs mpmath");
+    CHECK_REL(s.a, a, cond_tol(&s, 8.0), "sphere a(delta) vs mpmath");
+    /* the same through the geometry struct with R1 = R2 */
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(R, R, E, w, &G) == DC_OK);
+    CHECK(G.circular == 1);
+    dc_jkr_state t;
+    CHECK(dc_jkr_contact(&G, delta, NULL, &t) == DC_OK);
+    CHECK(t.F == s.F && t.a == s.a);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 14);
+}
+
+static void test_sphere_closed_forms(void)
+{
+  const double R = 2e-3, E = 1e9, w = 0.05;
+  CHECK_REL(dc_jkr_sphere_pulloff(R, w), 1.5 * M_PI * w * R, 1e-15, "pull-off 3/2 pi w R");
+  const double db = dc_jkr_sphere_delta_break(R, E, w);
+  CHECK_REL(db, -0.75 * pow(M_PI * M_PI * w * w * R / (E * E), 1.0 / 3.0), 1e-15, "delta_break");
+  dc_jkr_state s;
+  CHECK(dc_jkr_sphere(R, E, w, db, &s) == DC_OK && s.contact == 1);
+  CHECK_REL(s.F, -5.0 / 6.0 * M_PI * w * R, 1e-7, "force at separation -5/6 pi w R");
+  CHECK(isfinite(s.kn) && s.kn < -1e6);  /* vertical tangent, F falling */
+  CHECK(dc_jkr_sphere(R, E, w, db * (1 + 1e-12), &s) == DC_OK && s.contact == 0 && s.F == 0.0);
+  /* pull-off by load control: min over a of F(a) at a^3 = 9 pi w R^2/(8E) */
+  const double ap = cbrt(9.0 * M_PI * w * R * R / (8.0 * E));
+  CHECK(dc_jkr_sphere_at_radius(R, E, w, ap, &s) == DC_OK);
+  CHECK_REL(s.F, -1.5 * M_PI * w * R, 1e-14, "F at pull-off radius");
+  /* w = 0 is Hertz */
+  CHECK(dc_jkr_sphere(R, E, 0.0, 1e-6, &s) == DC_OK);
+  CHECK_REL(s.F, 4.0 / 3.0 * E * sqrt(R) * pow(1e-6, 1.5), 1e-15, "w = 0 sphere is Hertz");
+  CHECK(dc_jkr_sphere(R, E, 0.0, -1e-9, &s) == DC_OK && s.contact == 0);
+  /* large overlaps (fixed-point path) against the Ferrari path at the switch */
+  dc_jkr_geom G;
+  dc_jkr_geometry(R, R, E, w, &G);
+  const double dsw = 1e10 * G.delta_scale;
+  dc_jkr_state s1, s2;
+  dc_jkr_sphere(R, E, w, dsw * (1 - 1e-12), &s1);
+  dc_jkr_sphere(R, E, w, dsw * (1 + 1e-12), &s2);
+  CHECK_REL(s2.F, s1.F, 1e-11, "sphere continuity at the large-overlap switch");
+  CHECK(dc_jkr_sphere(-1, E, w, 0, &s) == DC_EDOM);
+  CHECK(dc_jkr_sphere(R, E, -1, 0, &s) == DC_EDOM);
+  CHECK(dc_jkr_sphere(R, E, w, NAN, &s) == DC_EDOM);
+}
+
+static void test_extrema_table(void)
+{
+  FILE *f = check_open_reference("jkr_elliptic_extrema.csv");
+  if (!f) return;
+  skip_header(f);
+  double v[12];
+  int rows = 0;
+  printf("ratio      F_pull/(1.5 pi w Rhat)  delta_break/delta_break(sphere, Rhat)\n");
+  while (read_row(f, v, 12) == 12) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
+    CHECK_REL(G.e2_hertz, v[5], 1e-13, "e2 Hertz");
+    CHECK_REL(G.e2_break, v[6], 1e-9, "e2 at separation");
+    CHECK_REL(G.delta_break, v[7], 1e-13, "delta at separation (min delta)");
+    CHECK_REL(G.F_break, v[8], 1e-9, "F at separation");
+    CHECK_REL(G.e2_pull, v[9], 1e-9, "e2 at pull-off");
+    CHECK_REL(G.delta_pull, v[10], 1e-9, "delta at pull-off");
+    CHECK_REL(G.F_pull, v[11], 1e-13, "F at pull-off (min F)");
+    printf("%-9g  %.15f       %.15f\n", v[0], -G.F_pull / (1.5 * M_PI * v[4] * G.Rhat),
+           G.delta_break / dc_jkr_sphere_delta_break(G.Rhat, v[3], v[4]));
+    /* the solver at the separation overlap returns the separation state */
+    dc_jkr_state s;
+    CHECK(dc_jkr_contact(&G, G.delta_break, NULL, &s) == DC_OK && s.contact == 1);
+    CHECK_REL(s.F, G.F_break, 1e-7, "contact at delta_break");
+    CHECK(dc_jkr_contact(&G, G.delta_break - 1e-9 * fabs(G.delta_break), NULL, &s) == DC_OK &&
+          s.contact == 0 && s.F == 0.0);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 10);
+}
+
+static void test_force_table(void)
+{
+  FILE *f = check_open_reference("jkr_elliptic_force.csv");
+  if (!f) return;
+  skip_header(f);
+  double v[11];
+  int rows = 0;
+  double worst = 0;
+  while (read_row(f, v, 11) == 11) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
+    dc_jkr_state s;
+    double hint = 0;
+    CHECK(dc_jkr_contact(&G, v[6], &hint, &s) == DC_OK);
+    const double tol = cond_tol(&s, 64.0);
+    CHECK_REL(s.F, v[7], tol, "elliptic F(delta) vs mpmath");
+    CHECK_REL(s.a, v[8], tol, "elliptic a(delta) vs mpmath");
+    CHECK_REL(s.b, v[9], tol, "elliptic b(delta) vs mpmath");
+    CHECK_REL(s.e2, v[10], tol, "elliptic e2(delta) vs mpmath");
+    const double err = fabs(s.F - v[7]) / fabs(v[7]);
+    if (err > worst) worst = err;
+    /* forward map at the reference e^2 */
+    dc_jkr_state t;
+    CHECK(dc_jkr_at_eccentricity(&G, v[10], &t) == DC_OK);
+    CHECK_REL(t.delta, v[6], 1e-12, "forward delta(e2)");
+    CHECK_REL(t.F, v[7], 1e-12, "forward F(e2)");
+    /* warm start from a nearby state gives the same answer */
+    double h2 = v[10] * (1 + 1e-6);
+    dc_jkr_state u;
+    if (h2 < G.e2_hertz && h2 > G.e2_break) {
+      CHECK(dc_jkr_contact(&G, v[6], &h2, &u) == DC_OK);
+      CHECK_REL(u.F, s.F, tol, "warm start");
+    }
+    rows++;
+  }
+  fclose(f);
+  printf("elliptic F(delta): max rel. error vs mpmath %.3g over %d states\n", worst, rows);
+  CHECK(rows == 60);
+}
+
+/* R_minor -> R_major: the elliptic path tends to classical JKR with R = Rhat. */
+static void test_circular_limit(void)
+{
+  const double E = 1e9, w = 0.05, R = 1e-3;
+  const double eps_r[] = {1e-12, 1e-9, 1e-6};
+  for (int k = 0; k < 3; k++) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(R, R * (1 - eps_r[k]), E, w, &G) == DC_OK);
+    CHECK(G.circular == 0);
+    dc_jkr_geom S;
+    dc_jkr_geometry(G.Rhat, G.Rhat, E, w, &S);
+    CHECK_REL(G.F_pull, S.F_pull, 4 * eps_r[k] + 1e-14, "circular limit: pull-off");
+    CHECK_REL(G.delta_break, S.delta_break, 4 * eps_r[k] + 1e-14, "circular limit: separation overlap");
+    double maxerr = 0;
+    for (int i = 0; i <= 40; i++) {
+      const double delta = G.delta_break * 0.99 + (5e-6 - G.delta_break) * i * i / 1600.0;
+      dc_jkr_state a, b;
+      CHECK(dc_jkr_contact(&G, delta, NULL, &a) == DC_OK);
+      CHECK(dc_jkr_contact(&S, delta, NULL, &b) == DC_OK);
+      const double e = fabs(a.F - b.F) / (fabs(b.F) + 1e-3 * fabs(S.F_pull));
+      if (e > maxerr) maxerr = e;
+    }
+    printf("circular limit 1 - ratio = %g: max |F_elliptic - F_JKR| / |F| = %.3g\n", eps_r[k], maxerr);
+    CHECK(maxerr <= 4 * eps_r[k] + 1e-13);
+  }
+}
+
+/* w = 0 gives exactly dc_hertz_contact; w -> 0 tends to it. */
+static void test_hertz_limit(void)
+{
+  const double R1 = 1e-3, R2 = 2e-4, E = 1e9;
+  dc_hertz_geom H;
+  dc_hertz_geometry(R1, R2, &H);
+  dc_jkr_geom G0, G1;
+  CHECK(dc_jkr_geometry(R1, R2, E, 0.0, &G0) == DC_OK);
+  CHECK(dc_jkr_geometry(R1, R2, E, 1e-9, &G1) == DC_OK);
+  for (int i = 0; i < 20; i++) {
+    const double delta = 1e-8 * pow(10.0, i * 0.2);
+    dc_hertz_state h;
+    dc_hertz_contact(&H, E, delta, &h);
+    dc_jkr_state s, t;
+    CHECK(dc_jkr_contact(&G0, delta, NULL, &s) == DC_OK);
+    CHECK(s.F == h.F && s.a == h.a && s.b == h.b && s.area == h.area && s.kn == h.kn);
+    CHECK(dc_jkr_contact(&G1, delta, NULL, &t) == DC_OK);
+    /* adhesive correction ~ (w/(E* delta))^1/2 (R/delta)^1/4 */
+    const double corr = sqrt(1e-9 / (E * delta)) * pow(G1.Rhat / delta, 0.25);
+    CHECK(fabs(t.F - h.F) <= 10 * corr * h.F + 1e-15 * h.F);
+    CHECK(t.F < h.F);
+  }
+  dc_jkr_state s;
+  CHECK(dc_jkr_contact(&G0, -1e-9, NULL, &s) == DC_OK && s.contact == 0);
+}
+
+/* Stable branch: a increases with delta, F falls to F_pull and then rises,
+   no jumps, no NaN; the
+   returned state reproduces the input overlap; both solver paths agree at
+   the switch to the first-order Hertz expansion. */
+static void test_curve_shape(void)
+{
+  const double ratios[] = {0.9, 0.3, 1e-2, 1e-3, 1e-5};
+  const double E = 1e9, w = 0.05, R = 1e-3;
+  for (int k = 0; k < 5; k++) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(R, R * ratios[k], E, w, &G) == DC_OK);
+    double prevF = -INFINITY, preva = 0, hint = 0;
+    int mono = 1, finite = 1, back = 1, cont = 1;
+    const int n = 4000;
+    dc_jkr_state prev;
+    memset(&prev, 0, sizeof prev);
+    for (int i = 1; i <= n; i++) {
+      const double t = (double)i / n;
+      const double delta = G.delta_break + (1e-5 - G.delta_break) * t * t * t;
+      dc_jkr_state s;
+      if (dc_jkr_contact(&G, delta, &hint, &s) != DC_OK) finite = 0;
+      if (!(isfinite(s.F) && isfinite(s.a) && isfinite(s.b) && isfinite(s.kn) && s.contact)) finite = 0;
+      if (i > 1 && !(s.a > preva)) mono = 0;
+      if (i > 1 && delta < G.delta_pull && !(s.F < prevF)) mono = 0;
+      if (i > 1 && prev.delta > G.delta_pull && !(s.F > prevF)) mono = 0;
+      if (fabs(s.delta - delta) > 1e-13 * fabs(delta) + 1e-15 * fabs(G.delta_break)) back = 0;
+      /* continuity: the secant slope lies between the end slopes (within 1%) */
+      if (i > n / 100) {
+        const double slope = (s.F - prev.F) / (s.delta - prev.delta);
+        if (!(slope <= 1.01 * prev.kn && slope >= 0.99 * s.kn) && !(slope >= 0.99 * prev.kn && slope <= 1.01 * s.kn)) cont = 0;
+      }
+      prevF = s.F; preva = s.a; prev = s;
+    }
+    CHECK(mono);
+    CHECK(finite);
+    CHECK(back);
+    CHECK(cont);
+    /* the two evaluation paths at the switch to the first-order expansion */
+    const double dsw = G.dbar_switch * G.delta_scale;
+    dc_jkr_state s1, s2;
+    dc_jkr_contact(&G, dsw * (1 - 1e-13), NULL, &s1);
+    dc_jkr_contact(&G, dsw * (1 + 1e-13), NULL, &s2);
+    CHECK_REL(s2.F, s1.F, 1e-12, "continuity at the first-order switch");
+    CHECK_REL(s2.a, s1.a, 1e-12, "continuity of a at the first-order switch");
+  }
+  dc_jkr_geom G;
+  CHECK(dc_jkr_geometry(1e-3, 1e-3 * 1e-7, E, w, &G) == DC_EDOM);
+  CHECK(dc_jkr_geometry(1e-3, 1e-4, -1, w, &G) == DC_EDOM);
+  CHECK(dc_jkr_geometry(1e-3, 1e-4, E, -1, &G) == DC_EDOM);
+  dc_jkr_geometry(1e-3, 1e-4, E, w, &G);
+  CHECK(dc_jkr_in_contact(&G, 0, -1e-12) == 0);
+  CHECK(dc_jkr_in_contact(&G, 0, 0.0) == 1);
+  CHECK(dc_jkr_in_contact(&G, 1, 0.5 * G.delta_break) == 1);
+  CHECK(dc_jkr_in_contact(&G, 1, 1.01 * G.delta_break) == 0);
+}
+
+int main(void)
+{
+  test_sphere_table();
+  test_sphere_closed_forms();
+  test_extrema_table();
+  test_force_table();
+  test_circular_limit();
+  test_hertz_limit();
+  test_curve_shape();
+  return check_summary("test_jkr_elliptic");
+}
