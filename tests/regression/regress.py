@@ -39,9 +39,10 @@ def run(deck, workdir, ranks=1, variables=None, tag="run"):
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     if ranks > 1:
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd
-    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
-               OMPI_MCA_rmaps_base_oversubscribe="1")
+        # oversubscribing makes Open MPI yield the core: only when it must
+        extra = ["--oversubscribe"] if (os.cpu_count() or 1) < ranks else []
+        cmd = ["mpirun", "-np", str(ranks)] + extra + cmd
+    env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     p = subprocess.run(cmd, cwd=workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     log_path = os.path.join(workdir, "log.%s" % tag)
     log = open(log_path).read() if os.path.exists(log_path) else ""
