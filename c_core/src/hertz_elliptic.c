@@ -5,6 +5,8 @@
 #include "dc/status.h"
 #include <math.h>
 
+#include "hertz_eccentricity_cheb.h"
+
 /* r(m) = (1 - m) D / B and s = d ln r / d ln m1 = 1/2 + C/(2D) + m1 C/(2B),
    from dD/dm = (D - C)/(2 m1) and dB/dm = C/2. */
 static double ratio_slope(const dc_ellint *el, double m1)
@@ -21,6 +23,24 @@ int dc_hertz_eccentricity_approx(double ratio, double *e2)
   return DC_OK;
 }
 
+/* ln(1 - e^2) to ~3e-11 relative from the Chebyshev fit of q(t) = ln(1-e^2)/t
+   (tests/reference/gen_hertz_eccentricity_cheb.py), t = ln ratio < 0. */
+static double log_m1_guess(double t)
+{
+  int p = 0;
+  while (p < DC_HERTZ_CHEB_PIECES - 1 && t > dc_hertz_cheb_hi[p]) p++;
+  const double lo = dc_hertz_cheb_lo[p], hi = dc_hertz_cheb_hi[p];
+  const double x = (2.0 * t - lo - hi) / (hi - lo), x2 = 2.0 * x;
+  const double *c = dc_hertz_cheb[p];
+  double b1 = 0.0, b2 = 0.0;
+  for (int j = DC_HERTZ_CHEB_NCOEF - 1; j > 0; j--) {
+    const double b0 = x2 * b1 - b2 + c[j];
+    b2 = b1;
+    b1 = b0;
+  }
+  return t * (x * b1 - b2 + c[0]);
+}
+
 /* Newton's method for r(m) = ratio, in m while e^2 is moderate (so small e^2
    keeps its relative precision) and in x = ln(1 - m) when the ellipse is
    slender. Once a step is below 1e-8 (relative) it is applied to m and, by the
@@ -28,9 +48,9 @@ int dc_hertz_eccentricity_approx(double ratio, double *e2)
    to K, E, D: the error left is O(step^2), below rounding. */
 static int solve_eccentricity(double ratio, double *m_out, double *m1_out, dc_ellint *el)
 {
-  double m;
-  dc_hertz_eccentricity_approx(ratio, &m);
+  const double y = log_m1_guess(log(ratio));
   if (ratio > 0.25) {
+    double m = -expm1(y);
     for (int it = 0; it < 30; it++) {
       const double m1 = 1.0 - m;
       dc_ellint_m(m, el);
@@ -48,11 +68,13 @@ static int solve_eccentricity(double ratio, double *m_out, double *m1_out, dc_el
       m = fmin(fmax(m + dm, 0.0), 0.9);
     }
   } else {
-    double x = log1p(-m);
+    double x = y, m1 = exp(y);
     for (int it = 0; it < 30; it++) {
-      const double m1 = exp(x);
       dc_ellint_m1(m1, el);
-      const double dx = -log(m1 * el->D / el->B / ratio) / ratio_slope(el, m1);
+      /* Newton on ln r(x) = ln ratio; ln(1 + u) ~ u is exact to O(u^2),
+         and u ~ 3e-11 from the fitted start */
+      const double u = m1 * el->D / (el->B * ratio) - 1.0;
+      const double dx = -(fabs(u) < 1e-6 ? u : log1p(u)) / ratio_slope(el, m1);
       if (fabs(dx) <= 1e-8) {
         /* dm = -m1 dx */
         el->K -= 0.5 * el->B * dx;
@@ -63,6 +85,7 @@ static int solve_eccentricity(double ratio, double *m_out, double *m1_out, dc_el
         return DC_OK;
       }
       x = fmin(x + dx, log(0.5));
+      m1 = exp(x);
     }
   }
   return DC_ENOCONV;
