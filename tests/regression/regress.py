@@ -31,11 +31,13 @@ class Checks:
         sys.exit(1 if self.failed else 0)
 
 
-def run(deck, workdir, ranks=1, variables=None, tag="run"):
-    """Runs `deck` (path under inputs/) in workdir; returns the log text."""
+def run(deck, workdir, ranks=1, variables=None, tag="run", expect_error=False):
+    """Runs `deck` (path under inputs/) in workdir; returns the log text.
+    With expect_error, returns (exit code, screen output + log) instead of
+    failing on a non-zero exit."""
     os.makedirs(workdir, exist_ok=True)
     deck_path = os.path.join(ROOT, "inputs", deck)
-    cmd = [LIGGGHTS, "-in", deck_path, "-log", "log.%s" % tag, "-screen", "none"]
+    cmd = [LIGGGHTS, "-in", deck_path, "-log", "log.%s" % tag] + ([] if expect_error else ["-screen", "none"])
     for k, v in (variables or {}).items():
         cmd += ["-var", k, str(v)]
     if ranks > 1:
@@ -43,9 +45,11 @@ def run(deck, workdir, ranks=1, variables=None, tag="run"):
         extra = ["--oversubscribe"] if (os.cpu_count() or 1) < ranks else []
         cmd = ["mpirun", "-np", str(ranks)] + extra + cmd
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
-    p = subprocess.run(cmd, cwd=workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    p = subprocess.run(cmd, cwd=workdir, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors="replace")
     log_path = os.path.join(workdir, "log.%s" % tag)
-    log = open(log_path).read() if os.path.exists(log_path) else ""
+    log = open(log_path, errors="replace").read() if os.path.exists(log_path) else ""
+    if expect_error:
+        return p.returncode, p.stdout + log
     if p.returncode != 0:
         print(p.stdout[-3000:])
         print(log[-3000:])
