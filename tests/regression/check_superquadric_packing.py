@@ -4,8 +4,10 @@ and 2 MPI ranks. Different rank counts sum forces in different orders, so
 trajectories diverge at round-off and then chaotically; what must agree is the
 settled state: same atom count, both at rest (kinetic energy below 1e-5 J,
 against about 1e-3 J while falling), mean height within 1% of each other,
-and the 1-rank run against its committed reference (same order of sums:
-1e-6 in the column-scaled table).
+and the 1-rank run against its committed reference: the rows up to step 5000
+(free fall and first impacts, before round-off differences in any part of the
+code are amplified by the dense packing: about tenfold per 1000 steps from
+1e-15 at step 4000) within 1e-9, and the settled mean height within 1%.
 Usage: check_superquadric_packing.py WORKDIR [--update]"""
 import os
 import sys
@@ -29,6 +31,9 @@ for ranks in (1, 2):
     if ranks == 1:
         if update:
             save_reference(os.path.join(d, "packing.txt"), ref)
-        compare_tables(c, rows, table(ref), 1e-6, "1 rank vs reference")
+        want = table(ref)
+        compare_tables(c, [r for r in rows if r[0] <= 5000], [r for r in want if r[0] <= 5000],
+                       1e-9, "1 rank vs reference, steps <= 5000")
+        c.rel(rows[-1][3], want[-1][3], 0.01, "1 rank vs reference, settled mean height")
 c.rel(final[2][3], final[1][3], 0.01, "mean height, 2 ranks vs 1 rank")
 c.finish()
