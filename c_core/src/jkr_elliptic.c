@@ -5,6 +5,7 @@
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -134,13 +135,41 @@ typedef struct {
   double dg, drho, dX, dY, dabar, ddbar, dPbar; /* d/dm                      */
 } jg_point;
 
-/* dC/dm = (D - (4 - 3m) C)/(2 m (1-m)); for small m (0/0) the series of
-   C = sum c_n m^n, c_0..3 = pi/16, 3pi/64, 75pi/2048, 245pi/8192. Only
-   Newton steps and extremum searches use it: 1e-9 relative is plenty. */
+/* dC/dm = (D - (4 - 3m) C)/(2 m (1-m)) (from dK/dm = B/(2 m1), dD/dm =
+   (D - C)/(2 m1), dB/dm = C/2). The numerator cancels to O(m) as m -> 0
+   (relative error ~6e-16/m), so below m = 0.05 the Taylor series of dC/dm
+   is used instead: coefficients (n+1) c_(n+1) of C = sum c_n m^n, from the
+   series of K and E (c_0 = pi/16, c_1 = 3 pi/64, ...); 13 terms leave
+   < 1e-17 relative at m = 0.05. Both branches: <= 1.2e-14 relative. */
 static double dc_C_dm_(double m, double m1, double D, double C)
 {
-  if (m < 1e-3) return M_PI * (3.0 / 64.0 + m * (150.0 / 2048.0 + m * (735.0 / 8192.0)));
+  if (m < 0.05) {
+    static const double c[13] = {
+      0.14726215563702156, 0.23009711818284618, 0.28186896977398658, 0.3171025909957349,
+      0.34258404920074931, 0.36185440196829146, 0.37693166871697027, 0.3890473294971586,
+      0.39899456235362004, 0.40730694906932046, 0.41435649241859716, 0.42041040221042731,
+      0.42566553223805765};
+    double s = c[12];
+    for (int n = 11; n >= 0; n--) s = s * m + c[n];
+    return s;
+  }
   return (D - (4.0 - 3.0 * m) * C) / (2.0 * m * m1);
+}
+
+/* Qn = lambda Delta Q = (1 - lambda^2) B - m (D - C) = m1 D - lambda^2 B
+   (the two are equal since B - m (D - C) = m1 D), and its derivative
+   dQn/dm = -((1 + lambda^2) C + D)/2 = -lambda Delta Pi2 / 2. Qn vanishes at
+   the Hertz shape (lambda^2 = m1 D/B, the Hertz relation), so the form is
+   chosen whose terms are smallest there: for m < 1/2 both terms of the
+   first are O(m); for slender ellipses both terms of the second are
+   O(m1 K), whereas those of the first are O(1) and would leave an absolute
+   error of ~eps in Q against Y = O(m1 Pi2) (a 4e-10 relative error of F at
+   R_minor/R_major = 1e-5). */
+static void dc_jkr_Qn_(const dc_jkr_geom *G, double m, double m1, const dc_ellint *el,
+                       double *Qn, double *dQn)
+{
+  *Qn = m < 0.5 ? G->l2c * el->B - m * (el->D - el->C) : m1 * el->D - G->lam2 * el->B;
+  *dQn = -0.5 * ((1.0 + G->lam2) * el->C + el->D);
 }
 
 /* Review Eqs. 19-23 in the cancellation-free Q/u form (header comment),
@@ -166,7 +195,7 @@ static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p)
   dc_ellint el;
   if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
   const double K = el.K, D = el.D, B = el.B, C = el.C;
-  const double lam = G->lambda, lam2 = lam * lam;
+  const double lam = G->lambda, lam2 = G->lam2;
   const double dK = 0.5 * B / m1, dD = 0.5 * (D - C) / m1, dB = 0.5 * C;
   const double dC = dc_C_dm_(m, m1, D, C);
 
@@ -175,17 +204,18 @@ static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p)
   const double lD = lam * Del;
   const double Pi2 = ((1.0 + lam2) * C + D) / lD;
   const double dPi2 = ((1.0 + lam2) * dC + dD) / lD - Pi2 * dDel / Del;
-  const double Qn = G->l2c * B - m * (D - C);
-  const double dQn = G->l2c * dB - (D - C) - m * (dD - dC);
+  double Qn, dQn;
+  dc_jkr_Qn_(G, m, m1, &el, &Qn, &dQn);
   const double Q = Qn / lD;
   const double dQ = dQn / lD - Q * dDel / Del;
-  const double q4 = sqrt(sqrt(m1));                 /* g^1/2 */
-  const double u = m < 0.5 ? -expm1(0.25 * log1p(-m)) : 1.0 - q4;
+  const double g = sqrt(m1), dg = -0.5 / g;
+  const double q4 = sqrt(g);                        /* g^1/2 */
+  /* u = 1 - g^1/2 = (1 - g^2)/((1 + g^1/2)(1 + g)): no cancellation */
+  const double u = m / ((1.0 + q4) * (1.0 + g));
   p->m1 = m1;
   const double du = 0.25 / (q4 * q4 * q4);
   const double rho = Q / u;
   const double drho = (dQ - rho * du) / u;
-  const double g = sqrt(m1), dg = -0.5 / g;
 
   const double X = m1 * Pi2 * K + Q * B - 2.0 * K * rho;
   const double dX = -Pi2 * K + m1 * (dPi2 * K + Pi2 * dK) + dQ * B + Q * dB - 2.0 * (dK * rho + K * drho);
@@ -257,17 +287,24 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   G->R_minor = Rmin;
   G->Rhat = sqrt(Rmaj) * sqrt(Rmin);
   G->lambda = sqrt(Rmin / Rmaj);
+  G->lam2 = Rmin / Rmaj;
   G->l2c = (Rmaj - Rmin) / Rmaj;
   G->Estar = Estar;
   G->w = w;
+  /* The w = 0 contact is dc_hertz_contact with this geometry. For w > 0 it
+     only gives the starting value of the Hertz shape, which near the circle
+     is not needed: there a failure of dc_hertz_geometry (it returns
+     DC_ENOCONV at 1 - ratio = 1e-9 and 1e-15) is not passed on. */
   int st = dc_hertz_geometry(Rmaj, Rmin, &G->hertz);
-  if (st != DC_OK) return st;
+  const int hertz_ok = st == DC_OK;
+  if (!hertz_ok) memset(&G->hertz, 0, sizeof G->hertz);
   G->e2_hertz = G->hertz.e2;
   G->circular = G->l2c < DC_JKR_CIRCULAR_TOL;
   G->a_scale = cbrt(8.0 * w / (M_PI * Estar)) * cbrt(G->Rhat * G->Rhat);
   G->delta_scale = G->a_scale * G->a_scale / (2.0 * G->Rhat);
   G->F_scale = 8.0 * w * G->Rhat;
   if (!(G->delta_scale > 0.0)) {  /* w = 0 (or w/E* so small it underflows) */
+    if (!hertz_ok) return st;
     G->w = 0.0;
     G->a_scale = G->delta_scale = G->F_scale = 0.0;
     G->e2_break = G->e2_pull = G->e2_hertz;
@@ -284,18 +321,28 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
     return DC_OK;
   }
   /* Solver variable v (e^2, or 1 - e^2 for slender contacts), and the
-     Hertz state polished as the zero of this file's Q (two Newton steps on
-     Qn = (1 - lambda^2) B - m (D - C), from dc_hertz_geometry's e^2). */
+     Hertz state as the zero of Qn (dc_jkr_Qn_) by Newton's method. Start:
+     dc_hertz_geometry's e^2, except near the circle, where that comes from
+     the ratio R_minor/R_major and so carries an absolute error ~eps (all
+     of e^2 ~ 4/3 (1 - ratio) at 1 - ratio = 1e-9 and below); there Qn =
+     l2c pi/4 - 3 pi m/16 + O(m^2, l2c m) gives e^2 = 4/3 l2c. */
+  if (!hertz_ok && !(G->l2c < 1e-3)) return st;
   G->use_m1 = G->e2_hertz > 0.5;
   double vH = G->use_m1 ? G->hertz.m1 : G->hertz.e2;
-  for (int i = 0; i < 2; i++) {
+  if (G->l2c < 1e-3) vH = 4.0 / 3.0 * G->l2c;
+  for (int i = 0;; i++) {
     const double m = G->use_m1 ? 1.0 - vH : vH, m1 = G->use_m1 ? vH : 1.0 - vH;
     dc_ellint el;
     if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
-    const double dC = dc_C_dm_(m, m1, el.D, el.C);
-    const double Qn = G->l2c * el.B - m * (el.D - el.C);
-    const double dQn = G->l2c * 0.5 * el.C - (el.D - el.C) - m * (0.5 * (el.D - el.C) / m1 - dC);
-    vH -= (G->use_m1 ? -1.0 : 1.0) * Qn / dQn;
+    double Qn, dQn;
+    dc_jkr_Qn_(G, m, m1, &el, &Qn, &dQn);
+    const double step = (G->use_m1 ? -1.0 : 1.0) * Qn / dQn;
+    double vn = vH - step;
+    if (!(vn > 0.0 && vn < 1.0)) vn = vn <= 0.0 ? 0.5 * vH : 0.5 * (1.0 + vH);
+    if (i == 40 || !isfinite(vn)) return DC_ENOCONV;
+    const int done = fabs(step) <= 4.0 * DBL_EPSILON * vH;
+    vH = vn;
+    if (done) break;
   }
   G->v_hertz = vH;
   G->e2_hertz = G->use_m1 ? 1.0 - vH : vH;
@@ -314,6 +361,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   jg_point p;
   jg_eval(G, vb, &p);
   G->e2_break = p.m;
+  G->dbar_break = p.dbar;
   G->delta_break = G->delta_scale * p.dbar;
   G->F_break = G->F_scale * p.Pbar;
   const double dbar_b = p.dbar;
@@ -406,15 +454,15 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
     s->area = M_PI * s->a * s->b;
     s->e2 = (1.0 - g) * (1.0 + g);
     s->kn = (1.5 * s->F - 0.75 * Fd * G->pert_P1 * rho) / delta;
-    if (hint) *hint = s->e2;
+    if (hint) *hint = G->use_m1 ? g * g : s->e2;
     return DC_OK;
   }
   const double vH = G->v_hertz, vb = G->v_break;
   jg_point p;
-  jg_eval(G, vb, &p);
-  const double dbar_b = p.dbar;
+  const double dbar_b = G->dbar_break;
   const double dtarget = dbar_t - dbar_b;
   if (!(dtarget > 0.0)) {   /* exactly at the separation point */
+    jg_eval(G, vb, &p);
     elliptic_fill(G, &p, 0.0, s);
     s->delta = delta;
     if (hint) *hint = vb;
@@ -446,8 +494,18 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
     if (p.dbar > dbar_t) hi = v; else lo = v;
     const double step = -(log(d) - Lt) * d / p.ddbar;
     const double lin = (dbar_t - p.dbar) / p.ddbar;  /* plain Newton step */
+    /* converged: the step is below 1e-8 of the distance to either end (ln d
+       is smooth on that scale, so the first-order application of the step
+       leaves O(1e-16) relative), or
+       at the rounding level of dbar(v): near the Hertz end rho, and so
+       dbar, carries a relative error ~eps v_H/|v_H - v| (Qn vanishes
+       there), which moves the Newton step by ~eps v_H; near the separation
+       point dbar - dbar_b carries an absolute error ~eps |dbar_b|, i.e. a
+       step of ~eps |dbar_b / ddbar|. The remaining step is applied to first
+       order (elliptic_fill). */
     const double scale = fmin(fabs(vH - v), fabs(v - vb));
-    if (fabs(step) <= 1e-9 * scale || fabs(hi - lo) <= 4.0 * 2.2e-16 * fabs(v)) {
+    const double tol_v = fmax(1e-8 * scale, 16.0 * DBL_EPSILON * (fabs(vH) + fabs(dbar_b / p.ddbar)));
+    if (fabs(step) <= tol_v || fabs(hi - lo) <= 4.0 * DBL_EPSILON * fabs(v)) {
       elliptic_fill(G, &p, lin, s);
       s->delta = delta;
       if (hint) *hint = v + lin;

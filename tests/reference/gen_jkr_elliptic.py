@@ -18,9 +18,16 @@ contact problem is solved from first principles with mpmath.
   For a given axis ratio g = b/a the first three conditions are linear in
   (al, be, ga); the fourth is then A1 a^3/2 + A2 = 0, solved for a. Then
      delta = constant term / Estar,  F = 2 pi a b (al + (be + ga)/3).
-The separation point (min delta) and pull-off point (min F) come from
-findroot on mpmath.diff of delta(g) and F(g); the Hertz shape (w = 0) from
-findroot on the y-end condition with w = 0.
+The separation point (min delta) and pull-off point (min F): a scan of
+g brackets each minimum, then a bracketed root search (Illinois) on
+mpmath.diff of the exact, uncached delta(g) and F(g). The Hertz shape
+(w = 0) from findroot on the y-end condition with w = 0.
+
+Inputs are the double-precision numbers the C test reads (R_minor =
+0.999e-3 is not a double; the problem is ill-conditioned in R_minor near
+R_major, with condition number ~ 1/(1 - ratio), so the reference must be
+for the same inputs), and each tabulated e^2 is a double, so that the
+forward-map check e^2 -> delta, F starts from exactly the tabulated state.
 
 Writes (in this folder):
   jkr_elliptic_extrema.csv  radius ratio -> Hertz e^2, separation point
@@ -36,9 +43,9 @@ import mpmath as mp
 mp.mp.dps = 30
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-R_MAJOR = mp.mpf('1e-3')
-ESTAR = mp.mpf('1e9')
-W = mp.mpf('0.05')
+R_MAJOR = mp.mpf(1e-3)   # the double nearest 1e-3, exactly
+ESTAR = mp.mpf(1e9)
+W = mp.mpf(0.05)
 RATIOS = ['0.999', '0.9', '0.7', '0.5', '0.3', '0.1', '0.03', '0.01', '0.003', '0.001']
 
 
@@ -112,33 +119,57 @@ def hertz_g(R1, R2):
     return mp.findroot(r, (g0 * mp.mpf('0.5'), min(g0 * 2, 1 - (1 - g0) / 4)), solver='anderson')
 
 
-def extremum(fun, g0, gH):
-    """g in (gH, 1) where d fun/dg = 0, starting near g0."""
+def extremum(fun, lo, hi):
+    """The g in [lo, hi] where d fun/dg = 0, given a sign change of the
+    derivative over the bracket. The derivative is mp.diff of the exact
+    (uncached) evaluation; mp.diff evaluates fun at raised working precision
+    with a step matched to it. The root is found by the Illinois variant of
+    regula falsi, which keeps the bracket, until it is narrower than 1e-24."""
     d = lambda g: mp.diff(fun, g)
-    return mp.findroot(d, g0, tol=mp.mpf(10) ** -24)
+    a, b = mp.mpf(lo), mp.mpf(hi)
+    fa, fb = d(a), d(b)
+    assert fa * fb < 0, 'no sign change of the derivative over the bracket'
+    side = 0
+    for _ in range(200):
+        c = (a * fb - b * fa) / (fb - fa)
+        fc = d(c)
+        if fc == 0:
+            return c
+        if fc * fb > 0:
+            b, fb = c, fc
+            if side == -1:
+                fa /= 2
+            side = -1
+        else:
+            a, fa = c, fc
+            if side == 1:
+                fb /= 2
+            side = 1
+        if abs(b - a) < mp.mpf(10) ** -24:
+            return c
+    raise RuntimeError('extremum search did not converge')
 
 
 def main():
     ext_rows, force_rows = [], []
     for ratio in RATIOS:
         r = mp.mpf(ratio)
-        R1, R2 = R_MAJOR, R_MAJOR * r
+        R1, R2 = R_MAJOR, mp.mpf(float(R_MAJOR * r))
         gH = hertz_g(R1, R2)
-        cache = {}
-
-        def st(g):
-            key = mp.nstr(g, 28)
-            if key not in cache:
-                cache[key] = Shape(g, R1, R2).state(W)
-            return cache[key]
+        st = lambda g: Shape(g, R1, R2).state(W)
         dfun = lambda g: st(g)[2]
         ffun = lambda g: st(g)[3]
-        # scan for starting values of the two minima
-        gs = [gH + (1 - gH) * mp.mpf(k) / 40 for k in range(1, 40)]
-        gd = min(gs, key=dfun)
-        gf = min(gs, key=ffun)
-        g_b = extremum(dfun, gd, gH)
-        g_p = extremum(ffun, gf, gH)
+        # scan: the minima of delta(g) and F(g) on (gH, 1) lie between the
+        # neighbours of the smallest sampled value (each has one minimum).
+        # Geometric in g - gH: for slender contacts both minima lie within
+        # a few per cent of (1 - gH) from the Hertz shape.
+        gs = [gH + (1 - gH) * mp.mpf(10) ** (-mp.mpf(k) / 8) for k in range(32, 0, -1)]
+        sts = [st(g) for g in gs]
+        kd = min(range(len(gs)), key=lambda k: sts[k][2])
+        kf = min(range(len(gs)), key=lambda k: sts[k][3])
+        assert 0 < kd < len(gs) - 1 and 0 < kf < len(gs) - 1
+        g_b = extremum(dfun, gs[kd - 1], gs[kd + 1])
+        g_p = extremum(ffun, gs[kf - 1], gs[kf + 1])
         ab, bb, db, Fb = st(g_b)
         ap, bp, dp, Fp = st(g_p)
         ext_rows.append([ratio, R1, R2, ESTAR, W, 1 - gH ** 2, 1 - g_b ** 2, db, Fb,
@@ -148,6 +179,7 @@ def main():
         # stable branch: g from g_b towards gH (e^2 from e2_b to e2_H)
         for t in ['0.001', '0.05', '0.3', '0.7', '0.95', '0.999']:
             g = g_b + (gH - g_b) * mp.mpf(t)
+            g = mp.sqrt(1 - mp.mpf(float(1 - g * g)))  # e^2 exactly a double
             a, b, d, F = st(g)
             force_rows.append([ratio, R1, R2, ESTAR, W, t, d, F, a, b, 1 - g ** 2])
 
@@ -156,23 +188,24 @@ def main():
         wr.writerow(['ratio', 'R_major', 'R_minor', 'Estar', 'w', 'e2_hertz', 'e2_break', 'delta_break',
                      'F_break', 'e2_pull', 'delta_pull', 'F_pull'])
         for row in ext_rows:
-            wr.writerow([row[0]] + [mp.nstr(v, 20) for v in row[1:]])
+            wr.writerow([row[0]] + [repr(float(v)) for v in row[1:5]] + [mp.nstr(v, 20) for v in row[5:]])
     with open(os.path.join(HERE, 'jkr_elliptic_force.csv'), 'w', newline='') as f:
         wr = csv.writer(f)
         wr.writerow(['ratio', 'R_major', 'R_minor', 'Estar', 'w', 'branch_fraction', 'delta', 'F', 'a', 'b', 'e2'])
         for row in force_rows:
-            wr.writerow([row[0]] + [mp.nstr(v, 20) for v in row[1:5]] + [row[5]] + [mp.nstr(v, 20) for v in row[6:]])
+            wr.writerow([row[0]] + [repr(float(v)) for v in row[1:5]] + [row[5]] +
+                        [mp.nstr(v, 20) for v in row[6:10]] + [repr(float(row[10]))])
 
     # classical JKR: delta = a^2/R - sqrt(2 pi w a/E*), F = 4E* a^3/(3R) - sqrt(8 pi w E* a^3)
     rows = []
-    R = mp.mpf('2e-3')
-    for w in ['0.05', '1e-6']:
+    R = mp.mpf(2e-3)
+    for w in [0.05, 1e-6]:
         w = mp.mpf(w)
         ac = mp.cbrt(mp.pi * w * R * R / (8 * ESTAR))
         dc = ac * ac / R - mp.sqrt(2 * mp.pi * w * ac / ESTAR)
         for k in ['0.999999', '0.5', '0', '-0.5', '-10', '-1000', '-1e6']:
             # delta = dc * k (k = 0.999999: just inside the separation point)
-            delta = dc * mp.mpf(k)
+            delta = mp.mpf(float(dc * mp.mpf(k)))
             f = lambda a: a * a / R - mp.sqrt(2 * mp.pi * w * a / ESTAR) - delta
             hi = ac * 2
             while f(hi) < 0:
@@ -184,7 +217,7 @@ def main():
         wr = csv.writer(f)
         wr.writerow(['R', 'Estar', 'w', 'delta', 'F', 'a'])
         for row in rows:
-            wr.writerow([mp.nstr(v, 20) for v in row])
+            wr.writerow([repr(float(v)) for v in row[:4]] + [mp.nstr(v, 20) for v in row[4:]])
 
 
 if __name__ == '__main__':

@@ -137,7 +137,7 @@ static void test_force_table(void)
   skip_header(f);
   double v[11];
   int rows = 0;
-  double worst = 0;
+  double worst = 0, worst_kd = 0, worst_fd = 0, worst_fF = 0;
   while (read_row(f, v, 11) == 11) {
     dc_jkr_geom G;
     CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
@@ -151,11 +151,33 @@ static void test_force_table(void)
     CHECK_REL(s.e2, v[10], tol, "elliptic e2(delta) vs mpmath");
     const double err = fabs(s.F - v[7]) / fabs(v[7]);
     if (err > worst) worst = err;
-    /* forward map at the reference e^2 */
-    dc_jkr_state t;
+    /* forward map at the reference e^2 (a double, so no input rounding).
+       Its errors come from those of K, E, D, B, C (<= 2e-15 relative),
+       which the map amplifies like a relative perturbation of e^2 of the
+       same size: the cancellation in Qn = lambda Delta Q near the Hertz
+       shape, where delta ~ (e2_H - e2)^-4/3, and in X where delta crosses
+       0, are exactly the condition numbers kappa = |d ln delta / d ln e2|
+       and |d ln F / d ln e2| of the map (measured here by a central
+       difference of the map itself). Bound: 16 eps (1 + kappa); the
+       table reaches kappa = 2.4e5 (delta near 0) and ~3e3 at the Hertz
+       end (t = 0.999), the observed error is <= 4.5 eps (1 + kappa). A
+       flat 1e-12 demanded more than the conditioning allows there (and the
+       old table's inputs were not the doubles the test passes: R_minor =
+       0.999e-3 rounded moves the answer by 1e-13/(1 - ratio)). */
+    dc_jkr_state t, tp, tm;
     CHECK(dc_jkr_at_eccentricity(&G, v[10], &t) == DC_OK);
-    CHECK_REL(t.delta, v[6], 1e-12, "forward delta(e2)");
-    CHECK_REL(t.F, v[7], 1e-12, "forward F(e2)");
+    const double e2 = v[10], h = 1e-4 * fmin(e2 - G.e2_break, G.e2_hertz - e2);
+    CHECK(dc_jkr_at_eccentricity(&G, e2 + h, &tp) == DC_OK);
+    CHECK(dc_jkr_at_eccentricity(&G, e2 - h, &tm) == DC_OK);
+    const double kd = fabs((tp.delta - tm.delta) / (2 * h) * e2 / t.delta);
+    const double kF = fabs((tp.F - tm.F) / (2 * h) * e2 / t.F);
+    if (kd > worst_kd) worst_kd = kd;
+    const double ed = fabs(t.delta / v[6] - 1) / (EPS * (1 + kd));
+    const double eF = fabs(t.F / v[7] - 1) / (EPS * (1 + kF));
+    if (ed > worst_fd) worst_fd = ed;
+    if (eF > worst_fF) worst_fF = eF;
+    CHECK_REL(t.delta, v[6], 16 * EPS * (1 + kd), "forward delta(e2)");
+    CHECK_REL(t.F, v[7], 16 * EPS * (1 + kF), "forward F(e2)");
     /* warm start from a nearby state gives the same answer */
     double h2 = v[10] * (1 + 1e-6);
     dc_jkr_state u;
@@ -167,6 +189,8 @@ static void test_force_table(void)
   }
   fclose(f);
   printf("elliptic F(delta): max rel. error vs mpmath %.3g over %d states\n", worst, rows);
+  printf("forward map e2 -> delta, F: max error %.2f and %.2f eps (1 + kappa), max kappa %.3g\n", worst_fd,
+         worst_fF, worst_kd);
   CHECK(rows == 60);
 }
 
@@ -249,10 +273,14 @@ static void test_curve_shape(void)
       if (i > 1 && delta < G.delta_pull && !(s.F < prevF)) mono = 0;
       if (i > 1 && prev.delta > G.delta_pull && !(s.F > prevF)) mono = 0;
       if (fabs(s.delta - delta) > 1e-13 * fabs(delta) + 1e-15 * fabs(G.delta_break)) back = 0;
-      /* continuity: the secant slope lies between the end slopes (within 1%) */
+      /* continuity: the secant slope lies between the end slopes, with a
+         slack of 1% of the larger |slope| (the slack is taken in magnitude:
+         scaling the bounds by 0.99 and 1.01 shrank the interval instead
+         when the slopes are negative, on the falling part of the branch) */
       if (i > n / 100) {
         const double slope = (s.F - prev.F) / (s.delta - prev.delta);
-        if (!(slope <= 1.01 * prev.kn && slope >= 0.99 * s.kn) && !(slope >= 0.99 * prev.kn && slope <= 1.01 * s.kn)) cont = 0;
+        const double slack = 0.01 * fmax(fabs(prev.kn), fabs(s.kn));
+        if (!(slope >= fmin(prev.kn, s.kn) - slack && slope <= fmax(prev.kn, s.kn) + slack)) cont = 0;
       }
       prevF = s.F; preva = s.a; prev = s;
     }

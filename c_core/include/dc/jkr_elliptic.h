@@ -78,7 +78,9 @@ extern "C" {
    Computed once per contact (and whenever the radii, w or Estar change). */
 typedef struct {
   double R_major, R_minor, Rhat; /* Rhat = sqrt(R_major R_minor)            */
-  double lambda, l2c;            /* lambda = sqrt(R_minor/R_major), l2c = 1 - lambda^2 */
+  double lambda, lam2, l2c;      /* lambda = sqrt(R_minor/R_major), lam2 =
+                                    R_minor/R_major, l2c = 1 - lam2 (each
+                                    rounded once from the radii)            */
   double Estar, w;
   int circular;                  /* 1: classical JKR with R = Rhat          */
   dc_hertz_geom hertz;           /* the w = 0 contact (dc_hertz_contact)    */
@@ -87,6 +89,7 @@ typedef struct {
   double delta_scale;            /* a_scale^2 / (2 Rhat)                     */
   double F_scale;                /* 8 w Rhat                                 */
   double e2_break, delta_break, F_break; /* separation point (min delta)    */
+  double dbar_break;             /* delta_break / delta_scale, as evaluated */
   double e2_pull, delta_pull, F_pull;    /* load-controlled pull-off (min F) */
   double guess_c1, guess_c2;     /* starting-value model of the solver       */
   /* first order in rho about the Hertz state: X = X0 + X1 rho, g = g0 + g1 rho,
@@ -140,9 +143,11 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *g
 int dc_jkr_at_eccentricity(const dc_jkr_geom *g, double e2, dc_jkr_state *s);
 
 /* The contact state for overlap delta on the stable branch: the DEM call.
-   hint: per-contact solver memory (e^2 of the previous call, or the
-   contact radius for circular contacts); pass a pointer to a double that
-   starts at 0 and is kept between time steps, or NULL. With a hint from
+   hint: per-contact solver memory (the solver variable of the previous
+   call: e^2, or 1 - e^2 when e2_hertz > 1/2; unused for circular
+   contacts and w = 0); pass a pointer to a double that starts at 0 and is
+   kept between time steps, or NULL. Any value is safe: one outside the
+   stable branch is ignored. With a hint from
    the previous step the solve takes about two evaluations of the elliptic
    integrals. w = 0 returns exactly dc_hertz_contact; circular contacts use
    dc_jkr_sphere. delta < delta_break: contact = 0, zero state, DC_OK.

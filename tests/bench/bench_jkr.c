@@ -1,0 +1,181 @@
+/* Adhesive (JKR) contact: ns per call and max relative error of each
+   evaluation path against the committed mpmath tables
+   (tests/reference/gen_jkr_elliptic.py):
+     - classical JKR for spheres, dc_jkr_sphere (Ferrari closed form),
+       vs jkr_sphere.csv;
+     - elliptic JKR force for a given overlap, dc_jkr_contact, without a hint
+       (cold start) and with the per-contact hint of a DEM time step (warm
+       start), vs jkr_elliptic_force.csv;
+     - dc_jkr_geometry (Hertz shape, separation and pull-off points), vs
+       jkr_elliptic_extrema.csv.
+   Errors are reported both raw and as a multiple of the condition-number
+   bound eps (1 + |delta kn / F|) used by the unit test (rounding of delta is
+   amplified by that factor near the separation point, where dF/d delta ->
+   -oo). Timing loops: a load-unload sweep over the stable branch from the
+   separation point to delta = 50 |delta_break| in 10^4 steps (warm: the hint
+   carried from step to step, as in a DEM run; cold: the same overlaps with
+   no hint), for R_minor/R_major = 0.5, 0.1, 0.01 and 0.001. */
+#include "dc/jkr_elliptic.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#define EPS 2.220446049250313e-16
+
+static double now(void)
+{
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return t.tv_sec + 1e-9 * t.tv_nsec;
+}
+
+static volatile double sink;
+
+static FILE *open_ref(const char *name)
+{
+  char path[1024];
+  snprintf(path, sizeof path, "%s", __FILE__);
+  char *sl = strrchr(path, '/');
+  if (sl) *sl = 0;
+  strncat(path, "/../reference/", sizeof path - strlen(path) - 1);
+  strncat(path, name, sizeof path - strlen(path) - 1);
+  FILE *f = fopen(path, "r");
+  if (!f) printf("cannot open %s\n", path);
+  return f;
+}
+
+static int read_row(FILE *f, double *v, int n)
+{
+  char line[2048];
+  if (!fgets(line, sizeof line, f)) return 0;
+  int k = 0;
+  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
+  return k;
+}
+
+static double cond(const dc_jkr_state *s)
+{
+  double c = fabs(s->delta * s->kn / s->F);
+  return c < 1e12 ? c : 1e12;
+}
+
+static void bench_sphere(void)
+{
+  double emax = 0, eunits = 0, v[6];
+  FILE *f = open_ref("jkr_sphere.csv");
+  if (f) {
+    read_row(f, v, 6);
+    while (read_row(f, v, 6) == 6) {
+      dc_jkr_state s;
+      dc_jkr_sphere(v[0], v[1], v[2], v[3], &s);
+      const double e = fabs(s.F / v[4] - 1);
+      emax = fmax(emax, e);
+      eunits = fmax(eunits, e / (EPS * (1 + cond(&s))));
+    }
+    fclose(f);
+  }
+  const double R = 1e-3, E = 1e9, w = 0.05;
+  const double db = dc_jkr_sphere_delta_break(R, E, w);
+  const int N = 2000000;
+  double s = 0, t0 = now();
+  dc_jkr_state st;
+  for (int i = 0; i < N; i++) {
+    dc_jkr_sphere(R, E, w, db + (50.0 * fabs(db) - db) * (double)i / N, &st);
+    s += st.F;
+  }
+  double t1 = now();
+  sink = s;
+  printf("path                                         ns/call   max rel.err   in units of eps(1+cond)\n");
+  printf("classical JKR, dc_jkr_sphere (Ferrari)     %8.1f     %.2e      %.1f\n", 1e9 * (t1 - t0) / N,
+         emax, eunits);
+}
+
+static void bench_elliptic(void)
+{
+  /* accuracy vs the mpmath table, cold and warm */
+  double ecold = 0, ewarm = 0, ucold = 0, uwarm = 0, egeo = 0, v[12];
+  int rows = 0;
+  FILE *f = open_ref("jkr_elliptic_force.csv");
+  if (f) {
+    read_row(f, v, 11);
+    while (read_row(f, v, 11) == 11) {
+      dc_jkr_geom G;
+      dc_jkr_geometry(v[1], v[2], v[3], v[4], &G);
+      dc_jkr_state s, t;
+      dc_jkr_contact(&G, v[6], NULL, &s);
+      /* warm: hint from the state one small step earlier */
+      double hint = 0;
+      dc_jkr_contact(&G, v[6] - 1e-3 * fabs(G.delta_break), &hint, &t);
+      dc_jkr_contact(&G, v[6], &hint, &t);
+      const double e1 = fabs(s.F / v[7] - 1), e2 = fabs(t.F / v[7] - 1);
+      ecold = fmax(ecold, e1);
+      ewarm = fmax(ewarm, e2);
+      ucold = fmax(ucold, e1 / (EPS * (1 + cond(&s))));
+      uwarm = fmax(uwarm, e2 / (EPS * (1 + cond(&t))));
+      rows++;
+    }
+    fclose(f);
+  }
+  f = open_ref("jkr_elliptic_extrema.csv");
+  if (f) {
+    read_row(f, v, 12);
+    while (read_row(f, v, 12) == 12) {
+      dc_jkr_geom G;
+      dc_jkr_geometry(v[1], v[2], v[3], v[4], &G);
+      egeo = fmax(egeo, fabs(G.F_pull / v[11] - 1));
+      egeo = fmax(egeo, fabs(G.delta_break / v[7] - 1));
+      egeo = fmax(egeo, fabs(G.e2_hertz / v[5] - 1));
+    }
+    fclose(f);
+  }
+  const double ratios[] = {0.5, 0.1, 0.01, 0.001};
+  const int N = 10000, REP = 40;
+  double tcold = 0, twarm = 0, tgeo = 0, s = 0;
+  for (int k = 0; k < 4; k++) {
+    dc_jkr_geom G;
+    const double t0 = now();
+    for (int r = 0; r < 200; r++) { dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, 0.05 + 1e-6 * r, &G); s += G.F_pull; }
+    tgeo += (now() - t0) / 200;
+    dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, 0.05, &G);
+    const double db = G.delta_break, span = 50.0 * fabs(db) - db;
+    dc_jkr_state st;
+    double t1 = now();
+    for (int r = 0; r < REP; r++) {
+      double hint = 0;
+      for (int i = 0; i < N; i++) {
+        /* load then unload: a DEM contact's path */
+        const int j = i < N / 2 ? i : N - i;
+        dc_jkr_contact(&G, db + span * (double)j / (N / 2), &hint, &st);
+        s += st.F;
+      }
+    }
+    double t2 = now();
+    for (int r = 0; r < REP / 4; r++) {
+      for (int i = 0; i < N; i++) {
+        const int j = i < N / 2 ? i : N - i;
+        dc_jkr_contact(&G, db + span * (double)j / (N / 2), NULL, &st);
+        s += st.F;
+      }
+    }
+    double t3 = now();
+    twarm += (t2 - t1) / ((double)REP * N);
+    tcold += (t3 - t2) / ((double)(REP / 4) * N);
+    printf("  R_minor/R_major = %-6g  warm %6.1f ns, cold %6.1f ns, dc_jkr_geometry %6.0f ns\n", ratios[k],
+           1e9 * (t2 - t1) / ((double)REP * N), 1e9 * (t3 - t2) / ((double)(REP / 4) * N), 1e9 * tgeo);
+    tgeo = 0;
+  }
+  sink = s;
+  printf("elliptic JKR F(delta), warm-start hint     %8.1f     %.2e      %.1f   (%d states)\n", 1e9 * twarm / 4,
+         ewarm, uwarm, rows);
+  printf("elliptic JKR F(delta), no hint             %8.1f     %.2e      %.1f\n", 1e9 * tcold / 4, ecold, ucold);
+  printf("dc_jkr_geometry (e2_hertz, delta_break, F_pull)   see above   %.2e\n", egeo);
+}
+
+int main(void)
+{
+  bench_sphere();
+  bench_elliptic();
+  return 0;
+}
