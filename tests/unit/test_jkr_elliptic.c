@@ -307,6 +307,44 @@ static void test_curve_shape(void)
   CHECK(dc_jkr_in_contact(&G, 1, 1.01 * G.delta_break) == 0);
 }
 
+/* Edges: g -> 1 (1 - ratio down to 1e-15, where dc_hertz_geometry fails),
+   w -> 0 (down to 1e-30 J/m^2), ratios down to DC_JKR_RATIO_MIN, overlaps
+   at the separation and pull-off points, tiny and huge overlaps: status
+   DC_OK and every output finite. */
+static void test_robustness(void)
+{
+  const double ratios[] = {1 - 1e-15, 1 - 1e-14, 1 - 1e-11, 1 - 1e-9, 0.5, 1e-3, 1e-5, 1e-6};
+  const double ws[] = {0.05, 1e-6, 1e-12, 1e-30};
+  int bad = 0, n = 0;
+  for (int k = 0; k < 8; k++)
+    for (int j = 0; j < 4; j++) {
+      dc_jkr_geom G;
+      if (dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, ws[j], &G) != DC_OK) { bad++; continue; }
+      if (!(isfinite(G.F_pull) && isfinite(G.delta_break) && G.F_pull <= 0 && G.delta_break <= 0)) bad++;
+      const double ds[] = {G.delta_break, G.delta_pull, 0.5 * G.delta_break, 0.0, 1e-300, 1e-12, 1e-6, 1e-3, 1.0};
+      double hint = 0;
+      for (int i = 0; i < 9; i++) {
+        dc_jkr_state s;
+        const int st = dc_jkr_contact(&G, ds[i], &hint, &s);
+        n++;
+        if (st != DC_OK || !(isfinite(s.F) && isfinite(s.a) && isfinite(s.b) && isfinite(s.kn) &&
+                             isfinite(s.area) && isfinite(s.e2) && s.contact == 1)) {
+          printf("robustness: ratio 1-%g w %g delta %g: status %d F %g\n", 1 - ratios[k], ws[j], ds[i], st, s.F);
+          bad++;
+        }
+      }
+    }
+  CHECK(bad == 0);
+  CHECK(n == 8 * 4 * 9);
+  dc_jkr_state s;
+  dc_jkr_geom G;
+  dc_jkr_geometry(1e-3, 1e-4, 1e9, 0.05, &G);
+  CHECK(dc_jkr_contact(&G, INFINITY, NULL, &s) == DC_EDOM);
+  CHECK(dc_jkr_contact(&G, NAN, NULL, &s) == DC_EDOM);
+  CHECK(dc_jkr_geometry(1e-3, NAN, 1e9, 0.05, &G) == DC_EDOM);
+  CHECK(dc_jkr_geometry(1e-3, 1e-4, 1e9, INFINITY, &G) == DC_EDOM);
+}
+
 int main(void)
 {
   test_sphere_table();
@@ -316,5 +354,6 @@ int main(void)
   test_circular_limit();
   test_hertz_limit();
   test_curve_shape();
+  test_robustness();
   return check_summary("test_jkr_elliptic");
 }
