@@ -511,7 +511,15 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
       if (hint) *hint = v + lin;
       return DC_OK;
     }
-    double vn = v + step;
+    /* the step is taken in u = ln((v - v_b)/(v_H - v)), in which ln d is
+       close to linear at both ends (slope 2 at the separation point, 4/3
+       at the Hertz end), so Newton's quadratic error term is small and a
+       warm start usually converges in two evaluations; to first order
+       this is the step above */
+    const double r = (v - vb) / (vH - v);
+    const double du = step * (vH - vb) / ((v - vb) * (vH - v));
+    const double rn = r * exp(du);
+    double vn = (vb + vH * rn) / (1.0 + rn);
     if (!((vn - lo) * (vn - hi) < 0.0)) vn = 0.5 * (lo + hi);
     v = vn;
   }
