@@ -57,7 +57,8 @@ static int solve_eccentricity(double ratio, double *m_out, double *m1_out, dc_el
       const double r = m1 * el->D / el->B;
       /* dr/dm = -r s / m1 */
       const double dm = (r - ratio) * m1 / (r * ratio_slope(el, m1));
-      if (fabs(dm) <= 1e-8 * m) {
+      /* near the circle m is only as precise as 1 - ratio: eps absolute */
+      if (fabs(dm) <= fmax(1e-8 * m, 4e-16)) {
         el->K += 0.5 * el->B / m1 * dm;
         el->E -= 0.5 * el->D * dm;
         el->D += 0.5 * (el->D - el->C) / m1 * dm;

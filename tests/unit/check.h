@@ -8,11 +8,12 @@
 
 static int check_passed_, check_failed_;
 
-static void check_true_(int ok, const char *what, const char *file, int line)
+static int check_true_(int ok, const char *what, const char *file, int line)
 {
-  if (ok) { check_passed_++; return; }
+  if (ok) { check_passed_++; return 1; }
   check_failed_++;
   printf("FAIL %s:%d: %s\n", file, line, what);
+  return 0;
 }
 
 /* |got - want| <= tol * max(|want|, tiny); NaN or Inf always fails. */

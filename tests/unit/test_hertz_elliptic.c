@@ -81,5 +81,16 @@ int main(void)
     prev_gamma = g.gamma;
   }
   CHECK(ok);
+  /* near the circle: converged for 1 - r down to rounding, e^2 ~ 4/3 (1 - r) */
+  for (int k = 1; k <= 160; k++) {
+    const double r = 1.0 - pow(10.0, -16.0 * k / 160.0);
+    double e2c, m1c;
+    int st = dc_hertz_eccentricity(r, &e2c, &m1c);
+    char what[64];
+    snprintf(what, sizeof what, "converged at 1 - r = %.3g", 1.0 - r);
+    if (!CHECK(st == DC_OK) || !isfinite(e2c)) { printf("  %s\n", what); continue; }
+    if (1.0 - r < 1e-6) CHECK_ABS(e2c, 4.0 / 3.0 * (1.0 - r), 4e-16 + 1e-6 * (1.0 - r), what);
+    CHECK(dc_hertz_geometry(1.0, r, &g) == DC_OK);
+  }
   return check_summary("hertz_elliptic");
 }
