@@ -31,6 +31,7 @@ NORMAL_MODEL(HERTZ_ELLIPTIC,hertz_elliptic,30)
 #include "contact_models.h"
 #include "global_properties.h"
 #include "normal_model_base.h"
+#include "normal_force_common.h"
 #include "superquadric_curvature.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
@@ -101,21 +102,17 @@ public:
       ellipticRadii(sidata, r_force, r_area);
 #endif
 
-    const double sqrtval = sqrt(r_force * deltan);
-    const double Sn = 2. * Yeff[itype][jtype] * sqrtval;
-    const double St = 8. * Geff[itype][jtype] * (r_area == r_force ? sqrtval : sqrt(r_area * deltan));
-    double kn = 4. / 3. * Yeff[itype][jtype] * sqrtval;
-    double kt = St;
+    double kn, Sn, kt;
+    hertzStiffness(Yeff[itype][jtype], Geff[itype][jtype], r_force, r_area, deltan, kn, Sn, kt);
     double gamman, gammat;
     if (viscoelastic) {
       /* Brilliantov: F_dis = A d(delta)/dt dF/d(delta) (review Eq. 37) */
       const double A = viscoelasticTime[itype][jtype];
       gamman = A * Sn;
-      gammat = tangential_damping ? A * St : 0.0;
+      gammat = tangential_damping ? A * kt : 0.0;
     } else {
-      const double sqrtFiveOverSix = 0.91287092917527685576161630466800355658790782499663875;
-      gamman = -2. * sqrtFiveOverSix * betaeff[itype][jtype] * sqrt(Sn * meff);
-      gammat = tangential_damping ? -2. * sqrtFiveOverSix * betaeff[itype][jtype] * sqrt(St * meff) : 0.0;
+      gamman = restitutionDamping(betaeff[itype][jtype], Sn, meff);
+      gammat = tangential_damping ? restitutionDamping(betaeff[itype][jtype], kt, meff) : 0.0;
     }
     kn /= force->nktv2p;
     kt /= force->nktv2p;
@@ -128,27 +125,7 @@ public:
     sidata.kt = kt;
     sidata.gamman = gamman;
     sidata.gammat = gammat;
-
-    const double Fn_ = sidata.is_wall ? Fn * sidata.area_ratio : Fn;
-    const double F[3] = {Fn_ * sidata.en[0], Fn_ * sidata.en[1], Fn_ * sidata.en[2]};
-    for (int k = 0; k < 3; k++) i_forces.delta_F[k] += F[k];
-    if (!sidata.is_wall)
-      for (int k = 0; k < 3; k++) j_forces.delta_F[k] -= F[k];
-#ifdef NONSPHERICAL_ACTIVE_FLAG
-    if (sidata.is_non_spherical) {
-      /* a normal force off the centre line produces torque */
-      double xc[3], t[3];
-      const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
-      vectorSubtract3D(sidata.contact_point, atom->x[sidata.i], xc);
-      vectorCross3D(xc, Fi, t);
-      for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
-      if (!sidata.is_wall) {
-        vectorSubtract3D(sidata.contact_point, atom->x[sidata.j], xc);
-        vectorCross3D(xc, Fi, t);
-        for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
-      }
-    }
-#endif
+    applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)

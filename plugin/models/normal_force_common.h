@@ -1,0 +1,65 @@
+/* Pieces shared by the plugin normal models: stock-`hertz` arithmetic for a
+   given force- and area-equivalent radius, LIGGGHTS' restitution damping,
+   and the application of a normal force (with its torque on non-spherical
+   particles). Only translation between LIGGGHTS data and numbers here. */
+#ifndef DC_PLUGIN_NORMAL_FORCE_COMMON_H
+#define DC_PLUGIN_NORMAL_FORCE_COMMON_H
+
+#include <cmath>
+#include "atom.h"
+#include "contact_interface.h"
+#include "vector_liggghts.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+/* LIGGGHTS' restitution-based damping coefficient for a tangent stiffness S
+   (stock hertz: gamma = -2 sqrt(5/6) beta sqrt(S m), beta = ln e / sqrt(ln^2 e + pi^2)). */
+inline double restitutionDamping(double betaeff, double S, double meff)
+{
+  const double sqrtFiveOverSix = 0.91287092917527685576161630466800355658790782499663875;
+  return -2. * sqrtFiveOverSix * betaeff * sqrt(S * meff);
+}
+
+/* Hertz with force-equivalent radius r_force and area-equivalent radius
+   r_area, in stock hertz's order of operations (bitwise equal to it when
+   r_force = r_area = effective radius): fills kn (secant), Sn (tangent
+   normal stiffness) and kt (Mindlin tangential stiffness). */
+inline void hertzStiffness(double Y, double G, double r_force, double r_area, double deltan,
+                           double &kn, double &Sn, double &kt)
+{
+  const double sqrtval = sqrt(r_force * deltan);
+  Sn = 2. * Y * sqrtval;
+  kt = 8. * G * (r_area == r_force ? sqrtval : sqrt(r_area * deltan));
+  kn = 4. / 3. * Y * sqrtval;
+}
+
+/* Adds Fn along en to i (and -Fn to j), with the torque of a force off the
+   centre line for non-spherical particles; walls scale by area_ratio. */
+inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, double **x,
+                             ForceData &i_forces, ForceData &j_forces)
+{
+  const double Fn_ = sidata.is_wall ? Fn * sidata.area_ratio : Fn;
+  const double F[3] = {Fn_ * sidata.en[0], Fn_ * sidata.en[1], Fn_ * sidata.en[2]};
+  for (int k = 0; k < 3; k++) i_forces.delta_F[k] += F[k];
+  if (!sidata.is_wall)
+    for (int k = 0; k < 3; k++) j_forces.delta_F[k] -= F[k];
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+  if (sidata.is_non_spherical) {
+    double xc[3], t[3];
+    const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
+    LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
+    LAMMPS_NS::vectorCross3D(xc, Fi, t);
+    for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
+    if (!sidata.is_wall) {
+      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
+      LAMMPS_NS::vectorCross3D(xc, Fi, t);
+      for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
+    }
+  }
+#endif
+}
+
+}
+}
+#endif
