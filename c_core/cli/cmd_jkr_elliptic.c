@@ -42,7 +42,7 @@ int cmd_jkr_elliptic(int argc, char **argv)
   const int n = (int)dc_cli_get(o, "n");
   if (n < 1) { fprintf(stderr, "dclaw jkr_elliptic: --n must be >= 1\n"); return 2; }
   printf("delta,contact,force,area,a,b,e2,stiffness\n");
-  double hint = 0.0;
+  dc_jkr_hint hint = {0};
   for (int i = 0; i < n; i++) {
     const double d = n == 1 ? d0 : d0 + (d1 - d0) * i / (n - 1);
     dc_jkr_state s;

@@ -7,9 +7,45 @@
 #include "dc/status.h"
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #define KN_MAX 1e300
+
+/* Cube root of a positive normal double, to < 1 ulp (the libm cbrt costs
+   ~30 ns here, through frexp/scalbn). Exponent/3 by integer arithmetic on
+   the high word (~6% error), a degree-4 polynomial correction in r = t^3/x
+   (fdlibm's cbrt coefficients, ~23 bits), rounding of t to 21 bits so that
+   t^2 is exact, and one Halley-like step t + t (x/t^2 - t)/(2t + x/t^2),
+   exact to rounding. Zero, subnormal, huge and non-finite x go to cbrt(). */
+static inline double dc_jkr_cbrt_(double x)
+{
+  if (!(x >= DBL_MIN && x <= DBL_MAX)) return cbrt(x);
+  uint64_t u;
+  memcpy(&u, &x, sizeof u);
+  u = ((u >> 32) / 3 + 715094163u) << 32;       /* (1023 - 1023/3 - 0.03306235651) 2^20 */
+  double t;
+  memcpy(&t, &u, sizeof t);
+  double r = (t * t) * (t / x);
+  t = t * ((1.87595182427177009643 + r * (-1.88497979543377169875 + r * 1.621429720105354466140)) +
+           ((r * r) * r) * (-0.758397934778766047437 + r * 0.145996192886612446982));
+  memcpy(&u, &t, sizeof u);
+  u = (u + 0x80000000u) & 0xffffffffc0000000ull;
+  memcpy(&t, &u, sizeof t);
+  const double s = t * t;
+  r = x / s;
+  r = (r - t) / ((t + t) + r);
+  return t + t * r;
+}
+
+/* (p q)^1/3 for p, q > 0, as one cube root when p q is a normal number,
+   else as the product of two (w/E* and R^2 can be far apart). */
+static inline double dc_jkr_cbrt_scale_(double p, double q)
+{
+  const double pq = p * q;
+  if (pq >= DBL_MIN && pq <= DBL_MAX) return dc_jkr_cbrt_(pq);
+  return cbrt(p) * cbrt(q);
+}
 
 /* ------------------------------------------------------------------ */
 /* Classical JKR for spheres.                                          */
@@ -66,7 +102,7 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && isfinite(R) && isfinite(Estar) && isfinite(w) &&
         isfinite(delta)))
     return DC_EDOM;
-  const double As = cbrt(8.0 * w / (M_PI * Estar)) * cbrt(R * R);
+  const double As = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), R * R);
   const double Ds = As * As / (2.0 * R);
   if (!(Ds > 0.0) || delta > 1e10 * Ds) {
     /* Hertz-dominated (or w = 0): a^2 = R (delta + (2 pi w a/E*)^1/2) by
@@ -84,46 +120,53 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
     s->delta = delta;
     return DC_OK;
   }
-  if (delta < dc_jkr_sphere_delta_break(R, Estar, w)) { zero_state(delta, s); return DC_OK; }
-  const double xb = cbrt(M_PI / 8.0);          /* break: 8 x^3 = pi */
-  const double dbar_b = -0.75 * M_PI * xb;     /* 2 xb^4 - pi xb     */
-  const double dbar = fmax(delta / Ds, dbar_b);
-  /* x^4 - p x - q = 0, p = pi/2, q = dbar/2 (Ferrari). Resolvent cubic
-     y^3 + q y - p^2/8 = 0; its largest root y > 0 gives
-     x = ((2y)^1/2 + (p (2/y)^1/2 - 2y)^1/2) / 2, the larger real root. */
-  const double P = 0.5 * dbar, A = M_PI * M_PI / 64.0;  /* A = p^2/16 */
-  const double disc = A * A + P * P * P / 27.0;
-  double y;
-  if (disc >= 0.0) {
-    const double S = sqrt(disc);
-    const double u = cbrt(A + S), v = cbrt(A - S);
-    y = 2.0 * A / (u * u + v * v + P / 3.0);  /* = u + v without cancellation */
-  } else {
-    const double r = sqrt(-P / 3.0);
-    double c = -3.0 * A / (P * r);            /* cos(3 theta) */
-    c = fmin(1.0, fmax(-1.0, c));
-    y = 2.0 * r * cos(acos(c) / 3.0);
+  /* With x = x_b (1 + y), x_b^3 = pi/8 (the separation point), the quartic
+     2 x^4 - pi x = dbar becomes y^2 (y^2 + 4 y + 6) = U, U = (dbar - dbar_b)
+     / (2 x_b^4) >= 0. In p = y^2 + 2 y it reads p k(p) = U^1/2 with k =
+     (1 + 2/(1 + (1 + p)^1/2)^2)^1/2 falling from 1.5^1/2 to 1; the rational
+     p ~ s (k0 b + s)/(b + s), s = U^1/2, k0 = 1.5^-1/2, b = 3.69 is within
+     2.5e-3 of the root for every U >= 0, and two Halley steps on the
+     quartic then reach rounding (2.5e-3 -> 5e-9 -> 2e-16, checked over U in
+     [1e-64, 1e20]). No transcendental call; one cube root for the scale. */
+  const double xb = 0.73229594378076163;       /* (pi/8)^1/3            */
+  const double inv2xb4 = 1.7386953397031944;   /* 1/(2 x_b^4) = 4/(pi x_b) */
+  const double dbar_b = -1.7254316679264337;   /* 2 x_b^4 - pi x_b = -3/4 pi x_b */
+  const double delta_b = Ds * dbar_b;
+  /* the separation test agrees with dc_jkr_sphere_delta_break (the
+     overlap dc_jkr_in_contact uses) to the last bit: the cbrt is only
+     taken below delta_b */
+  if (delta < delta_b && delta < dc_jkr_sphere_delta_break(R, Estar, w)) { zero_state(delta, s); return DC_OK; }
+  const double U = fmax(0.0, (delta - delta_b) / Ds * inv2xb4);
+  double y = 0.0;
+  if (U > 0.0) {
+    const double sU = sqrt(U);
+    const double p = sU * (0.81649658092772603 * 3.69 + sU) / (3.69 + sU);
+    y = p / (1.0 + sqrt(1.0 + p));
+    for (int i = 0; i < 2; i++) {
+      /* Halley on P = y^2 (y^2 + 4y + 6) - U: P' = 4y (y^2 + 3y + 3),
+         P'' = 12 (y^2 + 2y + 1) */
+      const double y2 = y * y;
+      const double P = y2 * (y2 + 4.0 * y + 6.0) - U;
+      const double P1 = 4.0 * y * (y2 + 3.0 * y + 3.0);
+      const double P2 = 12.0 * (y2 + 2.0 * y + 1.0);
+      y -= 2.0 * P * P1 / (2.0 * P1 * P1 - P * P2);
+    }
+    if (!(y > 0.0)) y = 0.0;
   }
-  const double s2y = sqrt(2.0 * y);
-  double x = 0.5 * (s2y + sqrt(fmax(0.0, M_PI / s2y - 2.0 * y)));
-  /* one Newton step on 2 x^4 - pi x - dbar (skipped at the double root) */
-  const double fp = 8.0 * x * x * x - M_PI;
-  if (fp > 1e-6) {
-    const double xn = x - (2.0 * x * x * x * x - M_PI * x - dbar) / fp;
-    x = fmax(xn, xb);
-  } else {
-    x = fmax(x, xb);
-  }
+  const double x = xb + xb * y;
+  const double c = (1.0 + y) * (1.0 + y) * (1.0 + y);   /* 8 x^3 / pi */
   const double a = As * x * x;
-  const double x3 = x * x * x;
   s->contact = 1;
   s->a = s->b = a;
   s->area = M_PI * a * a;
   s->e2 = 0.0;
   s->delta = delta;
-  s->F = 8.0 * w * R * (4.0 / (3.0 * M_PI) * x3 - 1.0) * x3;
-  /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)) */
-  s->kn = finite_kn(8.0 * w * R / Ds * x * x * (8.0 * x3 - 3.0 * M_PI), M_PI * (8.0 * x3 - M_PI));
+  /* F = 8 w R (4/(3 pi) x^3 - 1) x^3 = pi w R c (c/6 - 1) */
+  s->F = M_PI * w * R * c * (c / 6.0 - 1.0);
+  /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)),
+     with 8x^3/pi - 1 = y (3 + 3y + y^2) free of cancellation at the
+     separation point */
+  s->kn = finite_kn(8.0 * w * R / Ds * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
   return DC_OK;
 }
 
@@ -176,46 +219,49 @@ static void dc_jkr_Qn_(const dc_jkr_geom *G, double m, double m1, const dc_ellin
    with their derivatives in the solver variable v: v = m = e^2, or, for
    slender contacts (e2_hertz > 1/2), v = m1 = 1 - e^2, which keeps full
    relative precision of b/a when it is small. */
-static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p);
-static void jg_eval(const dc_jkr_geom *G, double v, jg_point *p)
+static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p);
+static inline void jg_eval(const dc_jkr_geom *G, double v, jg_point *p)
 {
-  jg_point q;
-  if (G->use_m1) {
-    jg_eval_m(G, 1.0 - v, v, &q);
-    q.dg = -q.dg; q.drho = -q.drho; q.dX = -q.dX; q.dY = -q.dY;
-    q.dabar = -q.dabar; q.ddbar = -q.ddbar; q.dPbar = -q.dPbar;
-  } else {
-    jg_eval_m(G, v, 1.0 - v, &q);
-  }
-  *p = q;
+  if (G->use_m1) jg_eval_m(G, 1.0 - v, v, -1.0, p);
+  else jg_eval_m(G, v, 1.0 - v, 1.0, p);
 }
 
-static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p)
+/* sv = dm/dv: the derivatives are returned in the solver variable v */
+static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p)
 {
+  /* The values (Pi2, Q, rho, abar, dbar, Pbar) are formed with true
+     divisions; the derivatives, which only steer Newton's method and give
+     kn, use reciprocals computed once (one rounding more, and fewer
+     dependent divisions on the path). */
   dc_ellint el;
   if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
   const double K = el.K, D = el.D, B = el.B, C = el.C;
   const double lam = G->lambda, lam2 = G->lam2;
-  const double dK = 0.5 * B / m1, dD = 0.5 * (D - C) / m1, dB = 0.5 * C;
+  const double im1 = 1.0 / m1;
+  const double dK = 0.5 * B * im1, dD = 0.5 * (D - C) * im1, dB = 0.5 * C;
   const double dC = dc_C_dm_(m, m1, D, C);
 
   const double Del = D * B + m1 * C * D + B * C;
   const double dDel = dD * B + D * dB - C * D + m1 * (dC * D + C * dD) + dB * C + B * dC;
   const double lD = lam * Del;
+  const double ilD = 1.0 / lD, dlnDel = dDel / Del;
   const double Pi2 = ((1.0 + lam2) * C + D) / lD;
-  const double dPi2 = ((1.0 + lam2) * dC + dD) / lD - Pi2 * dDel / Del;
+  const double dPi2 = ((1.0 + lam2) * dC + dD) * ilD - Pi2 * dlnDel;
   double Qn, dQn;
   dc_jkr_Qn_(G, m, m1, &el, &Qn, &dQn);
   const double Q = Qn / lD;
-  const double dQ = dQn / lD - Q * dDel / Del;
-  const double g = sqrt(m1), dg = -0.5 / g;
+  const double dQ = dQn * ilD - Q * dlnDel;
+  const double g = sqrt(m1);
   const double q4 = sqrt(g);                        /* g^1/2 */
+  const double ig = 1.0 / g, dg = -0.5 * ig;
   /* u = 1 - g^1/2 = (1 - g^2)/((1 + g^1/2)(1 + g)): no cancellation */
-  const double u = m / ((1.0 + q4) * (1.0 + g));
+  const double uden = (1.0 + q4) * (1.0 + g);
+  const double u = m / uden, iu = uden / m;
   p->m1 = m1;
-  const double du = 0.25 / (q4 * q4 * q4);
+  const double du = 0.25 * ig / q4;
   const double rho = Q / u;
-  const double drho = (dQ - rho * du) / u;
+  const double drho = (dQ - rho * du) * iu;
+  const double irho = 1.0 / rho;
 
   const double X = m1 * Pi2 * K + Q * B - 2.0 * K * rho;
   const double dX = -Pi2 * K + m1 * (dPi2 * K + Pi2 * dK) + dQ * B + Q * dB - 2.0 * (dK * rho + K * drho);
@@ -223,16 +269,18 @@ static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, jg_point *p)
   const double dY = (-Pi2 + m1 * dPi2 + dQ) / 3.0 - drho;
 
   /* abar^3 = g / rho^2, dbar = abar^2 X, Pbar = g Y / rho^2 */
-  const double abar = cbrt(g / (rho * rho));
-  const double lna = (dg / g - 2.0 * drho / rho) / 3.0;   /* d ln abar/dm */
+  const double grr = g / (rho * rho);
+  const double abar = dc_jkr_cbrt_(grr);
+  const double dln = dg * ig - 2.0 * drho * irho;          /* d ln(g/rho^2)/dm */
+  const double lna = dln * (1.0 / 3.0);                     /* d ln abar/dm */
   p->m = m; p->g = g; p->rho = rho; p->X = X; p->Y = Y;
   p->abar = abar;
   p->dbar = abar * abar * X;
-  p->Pbar = g * Y / (rho * rho);
-  p->dg = dg; p->drho = drho; p->dX = dX; p->dY = dY;
-  p->dabar = abar * lna;
-  p->ddbar = abar * abar * (2.0 * lna * X + dX);
-  p->dPbar = p->Pbar * (dg / g - 2.0 * drho / rho) + g * dY / (rho * rho);
+  p->Pbar = grr * Y;
+  p->dg = sv * dg; p->drho = sv * drho; p->dX = sv * dX; p->dY = sv * dY;
+  p->dabar = sv * abar * lna;
+  p->ddbar = sv * abar * abar * (2.0 * lna * X + dX);
+  p->dPbar = sv * grr * (Y * dln + dY);
 }
 
 /* Brent's zero finder (zeroin) on the m-derivative of dbar (which = 0) or
@@ -424,7 +472,18 @@ int dc_jkr_in_contact(const dc_jkr_geom *G, int was_in_contact, double delta)
   return delta >= 0.0 || (was_in_contact && delta >= G->delta_break);
 }
 
-int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_state *s)
+/* The hint after a converged solve at v (ln d = Lt): the slope du/dL of
+   u = ln((v - v_b)/(v_H - v)) against L = ln(dbar - dbar_b). */
+static void set_hint(dc_jkr_hint *h, double v, double vb, double vH, double Lt, double d, double ddbar)
+{
+  h->v = v;
+  h->L = Lt;
+  const double dudv = (vH - vb) / ((v - vb) * (vH - v));
+  const double s = dudv * d / ddbar;
+  h->dudL = isfinite(s) && s > 0.0 ? s : 0.0;
+}
+
+int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr_state *s)
 {
   if (!isfinite(delta)) return DC_EDOM;
   if (G->w == 0.0) {
@@ -454,7 +513,7 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
     s->area = M_PI * s->a * s->b;
     s->e2 = (1.0 - g) * (1.0 + g);
     s->kn = (1.5 * s->F - 0.75 * Fd * G->pert_P1 * rho) / delta;
-    if (hint) *hint = G->use_m1 ? g * g : s->e2;
+    if (hint) { hint->v = G->use_m1 ? g * g : s->e2; hint->dudL = 0.0; }
     return DC_OK;
   }
   const double vH = G->v_hertz, vb = G->v_break;
@@ -465,21 +524,33 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
     jg_eval(G, vb, &p);
     elliptic_fill(G, &p, 0.0, s);
     s->delta = delta;
-    if (hint) *hint = vb;
+    if (hint) { hint->v = vb; hint->dudL = 0.0; }
     return DC_OK;
   }
   double v;
-  if (hint && (*hint - vb) * (*hint - vH) < 0.0) {
-    v = *hint;
+  const double Lt = log(dtarget);
+  if (hint && (hint->v - vb) * (hint->v - vH) < 0.0) {
+    v = hint->v;
+    /* predictor: u linear in L from the previous solve (u(L) is close to
+       linear, so this is usually within the 1e-8 tolerance below and one
+       evaluation suffices) */
+    if (hint->dudL > 0.0 && isfinite(hint->L)) {
+      const double du = hint->dudL * (Lt - hint->L);
+      if (fabs(du) < 1.0) {
+        const double rn = (v - vb) / (vH - v) * exp(du);
+        const double vn = (vb + vH * rn) / (1.0 + rn);
+        if ((vn - vb) * (vn - vH) < 0.0) v = vn;
+      }
+    }
   } else {
-    v = vH - (vH - vb) / (1.0 + G->guess_c1 * sqrt(dtarget) + G->guess_c2 * pow(dtarget, 0.75));
+    const double sd = sqrt(dtarget);
+    v = vH - (vH - vb) / (1.0 + sd * (G->guess_c1 + G->guess_c2 * sqrt(sd)));
   }
   /* Newton on ln(dbar(v) - dbar_b) = ln(dtarget): dbar - dbar_b grows like
      (v - v_b)^2 at the separation point and like |v_H - v|^-4/3 at the
      Hertz end, so its logarithm is close to linear in ln of either
      distance and the iteration neither stalls at the vertical tangent nor
      jumps past the pole. Bracketed: lo has dbar < target, hi dbar > target. */
-  const double Lt = log(dtarget);
   double lo = vb, hi = vH;
   for (int it = 0; it < 60; it++) {
     jg_eval(G, v, &p);
@@ -492,30 +563,22 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
       continue;
     }
     if (p.dbar > dbar_t) hi = v; else lo = v;
-    const double step = -(log(d) - Lt) * d / p.ddbar;
     const double lin = (dbar_t - p.dbar) / p.ddbar;  /* plain Newton step */
-    /* converged: the step is below 1e-8 of the distance to either end (ln d
-       is smooth on that scale, so the first-order application of the step
-       leaves O(1e-16) relative), or
-       at the rounding level of dbar(v): near the Hertz end rho, and so
-       dbar, carries a relative error ~eps v_H/|v_H - v| (Qn vanishes
-       there), which moves the Newton step by ~eps v_H; near the separation
-       point dbar - dbar_b carries an absolute error ~eps |dbar_b|, i.e. a
-       step of ~eps |dbar_b / ddbar|. The remaining step is applied to first
-       order (elliptic_fill). */
+    const double step = -(log(d) - Lt) * d / p.ddbar;
     const double scale = fmin(fabs(vH - v), fabs(v - vb));
     const double tol_v = fmax(1e-8 * scale, 16.0 * DBL_EPSILON * (fabs(vH) + fabs(dbar_b / p.ddbar)));
     if (fabs(step) <= tol_v || fabs(hi - lo) <= 4.0 * DBL_EPSILON * fabs(v)) {
       elliptic_fill(G, &p, lin, s);
       s->delta = delta;
-      if (hint) *hint = v + lin;
+      if (hint) set_hint(hint, v + lin, vb, vH, Lt, dtarget, p.ddbar);
       return DC_OK;
     }
     /* the step is taken in u = ln((v - v_b)/(v_H - v)), in which ln d is
        close to linear at both ends (slope 2 at the separation point, 4/3
        at the Hertz end), so Newton's quadratic error term is small and a
-       warm start usually converges in two evaluations; to first order
-       this is the step above */
+       warm start usually converges in two evaluations (plain Newton steps
+       in v, even within a few per cent of the root, need three); to first
+       order this is the step above */
     const double r = (v - vb) / (vH - v);
     const double du = step * (vH - vb) / ((v - vb) * (vH - v));
     const double rn = r * exp(du);
@@ -526,6 +589,6 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, double *hint, dc_jkr_stat
   jg_eval(G, v, &p);
   elliptic_fill(G, &p, (dbar_t - p.dbar) / p.ddbar, s);
   s->delta = delta;
-  if (hint) *hint = v;
+  if (hint) { hint->v = v; hint->dudL = 0.0; }
   return DC_ENOCONV;
 }

@@ -106,7 +106,7 @@ static void bench_elliptic(void)
       dc_jkr_state s, t;
       dc_jkr_contact(&G, v[6], NULL, &s);
       /* warm: hint from the state one small step earlier */
-      double hint = 0;
+      dc_jkr_hint hint = {0};
       dc_jkr_contact(&G, v[6] - 1e-3 * fabs(G.delta_break), &hint, &t);
       dc_jkr_contact(&G, v[6], &hint, &t);
       const double e1 = fabs(s.F / v[7] - 1), e2 = fabs(t.F / v[7] - 1);
@@ -143,7 +143,7 @@ static void bench_elliptic(void)
     dc_jkr_state st;
     double t1 = now();
     for (int r = 0; r < REP; r++) {
-      double hint = 0;
+      dc_jkr_hint hint = {0};
       for (int i = 0; i < N; i++) {
         /* load then unload: a DEM contact's path */
         const int j = i < N / 2 ? i : N - i;

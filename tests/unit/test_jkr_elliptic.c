@@ -142,7 +142,7 @@ static void test_force_table(void)
     dc_jkr_geom G;
     CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
     dc_jkr_state s;
-    double hint = 0;
+    dc_jkr_hint hint = {0};
     CHECK(dc_jkr_contact(&G, v[6], &hint, &s) == DC_OK);
     const double tol = cond_tol(&s, 64.0);
     CHECK_REL(s.F, v[7], tol, "elliptic F(delta) vs mpmath");
@@ -179,9 +179,10 @@ static void test_force_table(void)
     CHECK_REL(t.delta, v[6], 16 * EPS * (1 + kd), "forward delta(e2)");
     CHECK_REL(t.F, v[7], 16 * EPS * (1 + kF), "forward F(e2)");
     /* warm start from a nearby state gives the same answer */
-    double h2 = v[10] * (1 + 1e-6);
+    const double e2n = v[10] * (1 + 1e-6);
+    dc_jkr_hint h2 = {G.use_m1 ? 1.0 - e2n : e2n, 0.0, 0.0};
     dc_jkr_state u;
-    if (h2 < G.e2_hertz && h2 > G.e2_break) {
+    if (e2n < G.e2_hertz && e2n > G.e2_break) {
       CHECK(dc_jkr_contact(&G, v[6], &h2, &u) == DC_OK);
       CHECK_REL(u.F, s.F, tol, "warm start");
     }
@@ -258,7 +259,8 @@ static void test_curve_shape(void)
   for (int k = 0; k < 5; k++) {
     dc_jkr_geom G;
     CHECK(dc_jkr_geometry(R, R * ratios[k], E, w, &G) == DC_OK);
-    double prevF = -INFINITY, preva = 0, hint = 0;
+    double prevF = -INFINITY, preva = 0;
+    dc_jkr_hint hint = {0};
     int mono = 1, finite = 1, back = 1, cont = 1;
     const int n = 4000;
     dc_jkr_state prev;
@@ -322,7 +324,7 @@ static void test_robustness(void)
       if (dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, ws[j], &G) != DC_OK) { bad++; continue; }
       if (!(isfinite(G.F_pull) && isfinite(G.delta_break) && G.F_pull <= 0 && G.delta_break <= 0)) bad++;
       const double ds[] = {G.delta_break, G.delta_pull, 0.5 * G.delta_break, 0.0, 1e-300, 1e-12, 1e-6, 1e-3, 1.0};
-      double hint = 0;
+      dc_jkr_hint hint = {0};
       for (int i = 0; i < 9; i++) {
         dc_jkr_state s;
         const int st = dc_jkr_contact(&G, ds[i], &hint, &s);

@@ -142,17 +142,26 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *g
    delta and F. Elliptic contacts with w > 0 only (DC_EDOM otherwise). */
 int dc_jkr_at_eccentricity(const dc_jkr_geom *g, double e2, dc_jkr_state *s);
 
-/* The contact state for overlap delta on the stable branch: the DEM call.
-   hint: per-contact solver memory (the solver variable of the previous
-   call: e^2, or 1 - e^2 when e2_hertz > 1/2; unused for circular
-   contacts and w = 0); pass a pointer to a double that starts at 0 and is
-   kept between time steps, or NULL. Any value is safe: one outside the
-   stable branch is ignored. With a hint from
-   the previous step the solve takes about two evaluations of the elliptic
-   integrals. w = 0 returns exactly dc_hertz_contact; circular contacts use
-   dc_jkr_sphere. delta < delta_break: contact = 0, zero state, DC_OK.
-   Domain: delta finite. */
-int dc_jkr_contact(const dc_jkr_geom *g, double delta, double *hint, dc_jkr_state *s);
+/* Per-contact solver memory of dc_jkr_contact, kept between time steps.
+   Start from all zeros ({0}). v: the solver variable of the previous solve
+   (e^2, or 1 - e^2 when e2_hertz > 1/2); L, dudL: the log-log slope there
+   (the predictor), dudL = 0 when unknown. Any content is safe: a v outside
+   the stable branch is ignored, dudL <= 0 means start at v. */
+typedef struct {
+  double v, L, dudL;
+} dc_jkr_hint;
+
+/* The contact state for overlap delta on the stable branch: the DEM call
+   (review Eqs. 19-21 inverted for e^2 at given delta).
+   hint: per-contact solver memory (above), or NULL (cold start, about
+   three evaluations of the elliptic integrals). Unused for circular
+   contacts and w = 0. With the hint of the previous time step the solve
+   predicts the new e^2 from the previous one and the slope of
+   ln((v - v_b)/(v_H - v)) against ln(delta - delta_break) and usually
+   takes one or two evaluations. w = 0 returns exactly dc_hertz_contact;
+   circular contacts use dc_jkr_sphere. delta < delta_break: contact = 0,
+   zero state, DC_OK. Domain: delta finite. */
+int dc_jkr_contact(const dc_jkr_geom *g, double delta, dc_jkr_hint *hint, dc_jkr_state *s);
 
 /* Contact hysteresis: a new contact forms when delta >= 0; an existing one
    persists while delta >= delta_break (< 0 for w > 0). Returns 1 or 0. */
