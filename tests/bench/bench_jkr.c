@@ -88,7 +88,7 @@ static void bench_sphere(void)
   double t1 = now();
   sink = s;
   printf("path                                         ns/call   max rel.err   in units of eps(1+cond)\n");
-  printf("classical JKR, dc_jkr_sphere (Ferrari)     %8.1f     %.2e      %.1f\n", 1e9 * (t1 - t0) / N,
+  printf("classical JKR, dc_jkr_sphere               %8.1f     %.2e      %.1f\n", 1e9 * (t1 - t0) / N,
          emax, eunits);
 }
 

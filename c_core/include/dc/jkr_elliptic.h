@@ -114,8 +114,9 @@ typedef struct {
 } dc_jkr_state;
 
 /* Classical JKR for spheres (Johnson, Kendall & Roberts 1971; review
-   Sec. 2.2 circular limit), closed form: the quartic in a^1/2 is solved by
-   Ferrari's resolvent cubic (no iteration). Stable (large-contact) branch.
+   Sec. 2.2 circular limit): the quartic in a^1/2 is solved from a rational
+   starting value by two Halley steps (no transcendental call, one cube
+   root for the length scale). Stable (large-contact) branch.
    Domain: R > 0, Estar > 0, w >= 0, delta finite. w = 0 is Hertz. delta <
    delta_break gives contact = 0 and a zero state (DC_OK). */
 int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s);
