@@ -1,7 +1,7 @@
 /* Adhesive (JKR) contact: ns per call and max relative error of each
    evaluation path against the committed mpmath tables
    (tests/reference/gen_jkr_elliptic.py):
-     - classical JKR for spheres, dc_jkr_sphere (Ferrari closed form),
+     - classical JKR for spheres, dc_jkr_sphere (quartic by Halley steps),
        vs jkr_sphere.csv;
      - elliptic JKR force for a given overlap, dc_jkr_contact, without a hint
        (cold start) and with the per-contact hint of a DEM time step (warm
