@@ -6,7 +6,11 @@
      D = (K - E)/m,  B = (E - (1-m) K)/m = K - D,  C = (D - B)/m
    Domain: 0 <= m < 1. D, B, C are evaluated without the 0/0 at m -> 0
    (D(0) = B(0) = pi/4, C(0) = pi/16) and K, E to ~1e-15 relative up to
-   1 - m = 1e-300 when the complementary parameter is passed. */
+   1 - m = 1e-300 when the complementary parameter is passed.
+   Computed from piecewise polynomials fitted offline with mpmath
+   (tests/reference/gen_ellint_fast.py): D, B, C, E in m on 16 pieces for
+   1 - m >= 1/16, and F = P(1-m) + ln(1-m) Q(1-m) below; K = B + D. Worst
+   measured error against mpmath 8e-16 relative (C), 5e-16 for the others. */
 #ifndef DC_ELLIPTIC_INTEGRALS_H
 #define DC_ELLIPTIC_INTEGRALS_H
 
