@@ -13,7 +13,7 @@ for s in 0.0 0.001 0.005 0.01; do
   mkdir -p "$out/sigma_r_$s"; cd "$out/sigma_r_$s"
   echo "rough_packing: sigma_r = $s (a few minutes)"
   mpirun -np 2 "$root/build/bin/liggghts" -in "$root/examples/rough_packing/in.rough_packing" \
-         -var sigma_r "$s" -log log.liggghts -screen none
+         -var sigma_r "$s" -log log.liggghts > screen.txt
 done
 python3 - "$out" <<'PY'
 import math, os, sys
