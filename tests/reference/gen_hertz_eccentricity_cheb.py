@@ -1,55 +1,73 @@
 #!/usr/bin/env python3
-"""Chebyshev fit of the exact elliptic Hertz eccentricity, used only as the
-starting point of the Newton solve in c_core/src/hertz_elliptic.c.
+"""Chebyshev fits of the exact elliptic Hertz eccentricity to rounding, for
+c_core/src/hertz_elliptic.c (review Eq. 13, ratio r = R_minor/R_major):
 
-q(t) = ln(1 - e^2) / t with t = ln(R_minor/R_major) in [ln 1e-12, 0)
-(q -> 4/3 as t -> 0), e^2 from review Eq. 13 (ratio R_minor/R_major),
-solved with mpmath at 40 digits. Pieces in t, degree chosen so the fit's
-relative error in 1 - e^2 is below 1e-10; one Newton step then leaves
-O(1e-20). Writes c_core/src/hertz_eccentricity_cheb.h.
+  r in [1/4, 1]:      h(r) = e^2 / (1 - r)            (h -> 4/3 as r -> 1)
+  r in [1e-12, 1/4]:  g(t) = (1 - e^2) / r,  t = ln r
+
+Both are smooth and of order one, so e^2 = (1 - r) h and 1 - e^2 = r g keep
+full relative precision at both ends (no cancellation, no exp of a large
+argument). Uniform pieces (the index is one multiplication), degree DEG,
+piece counts raised until the fit's worst relative error on a 40-point
+check grid per piece is below TOL. e^2 from mpmath (40 digits)
+on Eq. 13 times its denominator, divided by e^2 (the trivial root e = 0 of
+Eq. 13 removed), by the secant method from Eq. 14. Writes c_core/src/hertz_eccentricity_cheb.h.
 Run: python3 gen_hertz_eccentricity_cheb.py"""
 import os
 import mpmath as mp
 
 mp.mp.dps = 40
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-EDGES = [mp.log(mp.mpf("1e-12")), -14, -7, -3.5, -1.5, -0.5, 0]
 DEG = 12
+TOL = mp.mpf("2.5e-16")   # the coefficients rounded to doubles alone give ~1e-16
+T_LO = mp.log(mp.mpf("1e-12"))
+T_HI = mp.log(mp.mpf("0.25"))
 
 
-def m1_of_t(t):
-    """1 - e^2 for ratio r = e^t, by bisection in ln m1 on Eq. 13 x denominator / e^2."""
-    r = mp.exp(t)
-
-    def g(x):
+def m_and_m1(r):
+    """(e^2, 1 - e^2) for ratio r < 1: secant iteration in x = ln(1 - e^2),
+    started from review Eq. 14 (within 2% in b/a; bisection if it fails),
+    checked by its residual."""
+    def G(x):
         m1 = mp.exp(x)
         m = -mp.expm1(x)
         K, E = mp.ellipk(m), mp.ellipe(m)
         return (m1 * ((1 + r) * K - E) - r * E) / m
+    a_over_b = -0.177 + mp.sqrt(0.5 / r * mp.log(16 / r)) + 0.16 * mp.log(r)
+    x0 = -2 * mp.log(a_over_b) if a_over_b > 1 else mp.log(r) * 4 / 3
+    try:
+        x = mp.findroot(G, (x0, x0 * (1 + mp.mpf("1e-3"))), tol=mp.mpf(10) ** -70)
+    except ValueError:
+        # rare secant failure: bisection on the bracket [2 ln r - 10, ln r / 2]
+        lo, hi = 2 * mp.log(r) - 10, mp.log(r) / 2
+        glo = G(lo)
+        for _ in range(135):
+            mid = (lo + hi) / 2
+            gm = G(mid)
+            if (gm > 0) == (glo > 0):
+                lo, glo = mid, gm
+            else:
+                hi = mid
+        x = (lo + hi) / 2
+    assert abs(G(x)) < mp.mpf(10) ** -34, (r, G(x))
+    return -mp.expm1(x), mp.exp(x)
 
-    lo, hi = 2 * t - 10, t / 2
-    glo = g(lo)
-    for _ in range(160):
-        mid = (lo + hi) / 2
-        gm = g(mid)
-        if (gm > 0) == (glo > 0):
-            lo, glo = mid, gm
-        else:
-            hi = mid
-    return mp.exp((lo + hi) / 2)
+
+def h_of_r(r):
+    return m_and_m1(r)[0] / (1 - r)
 
 
-def q(t):
-    return mp.log(m1_of_t(t)) / t
+def g_of_t(t):
+    r = mp.exp(t)
+    return m_and_m1(r)[1] / r
 
 
-def cheb_coeffs(a, b, n):
+def cheb(f, a, b):
+    n = DEG
     nodes = [mp.cos(mp.pi * (k + mp.mpf(1) / 2) / (n + 1)) for k in range(n + 1)]
-    vals = [q((b - a) / 2 * x + (b + a) / 2) for x in nodes]
-    c = []
-    for j in range(n + 1):
-        s = sum(v * mp.cos(mp.pi * j * (k + mp.mpf(1) / 2) / (n + 1)) for k, v in enumerate(vals))
-        c.append(2 * s / (n + 1))
+    vals = [f((b - a) / 2 * x + (b + a) / 2) for x in nodes]
+    c = [2 * sum(v * mp.cos(mp.pi * j * (k + mp.mpf(1) / 2) / (n + 1)) for k, v in enumerate(vals)) / (n + 1)
+         for j in range(n + 1)]
     c[0] /= 2
     return c
 
@@ -61,32 +79,42 @@ def clenshaw(c, x):
     return x * b1 - b2 + c[0]
 
 
-pieces = []
-worst = 0
-for a, b in zip(EDGES[:-1], EDGES[1:]):
-    a, b = mp.mpf(a), mp.mpf(b)
-    # the last piece ends at t -> 0 where q is analytic: fit up to -1e-30
-    bb = b if b < 0 else mp.mpf("-1e-30")
-    c = cheb_coeffs(a, bb, DEG)
-    for k in range(41):
-        t = a + (bb - a) * k / 40
-        if t == 0:
-            continue
-        x = (2 * t - (a + bb)) / (bb - a)
-        err = abs(mp.exp(clenshaw(c, x) * t) / m1_of_t(t) - 1)
-        worst = max(worst, err)
-    pieces.append((a, bb, c))
-print("worst relative error of 1 - e^2 from the fit: %s" % mp.nstr(worst, 3))
+def fit(f, lo, hi, npieces):
+    pieces, worst = [], 0
+    w = (hi - lo) / npieces
+    for p in range(npieces):
+        a, b = lo + p * w, lo + (p + 1) * w
+        c = [mp.mpf(float(cj)) for cj in cheb(f, a, b)]     # the doubles the C code uses
+        for k in range(1, 40):
+            s = a + (b - a) * k / 40
+            worst = max(worst, abs(clenshaw(c, (2 * s - a - b) / (b - a)) / f(s) - 1))
+        pieces.append(c)
+    return pieces, worst
+
+
+def best(f, lo, hi, name, n):
+    while True:
+        pieces, worst = fit(f, lo, hi, n)
+        print("%s: %d pieces, worst relative error %s" % (name, n, mp.nstr(worst, 3)))
+        if worst < TOL or n >= 64:
+            return pieces, worst
+        n = int(n * 1.5) + 1
+
+
+hp, hw = best(h_of_r, mp.mpf("0.25"), mp.mpf(1), "h(r) on [1/4, 1]", 4)
+gp, gw = best(g_of_t, T_LO, T_HI, "g(t) on [ln 1e-12, ln 1/4]", 8)
 
 with open(os.path.join(ROOT, "c_core", "src", "hertz_eccentricity_cheb.h"), "w") as f:
     f.write("/* Generated by tests/reference/gen_hertz_eccentricity_cheb.py: do not edit.\n")
-    f.write("   Chebyshev series of q(t) = ln(1 - e^2)/t, t = ln(R_minor/R_major), on pieces\n")
-    f.write("   [lo, hi] of t; x = (2t - lo - hi)/(hi - lo). Worst relative error of 1 - e^2\n")
-    f.write("   over the pieces: %s (a starting value for Newton's method). */\n" % mp.nstr(worst, 3))
-    f.write("#define DC_HERTZ_CHEB_PIECES %d\n#define DC_HERTZ_CHEB_NCOEF %d\n" % (len(pieces), DEG + 1))
-    f.write("static const double dc_hertz_cheb_lo[%d] = {%s};\n" % (len(pieces), ", ".join(mp.nstr(p[0], 20) for p in pieces)))
-    f.write("static const double dc_hertz_cheb_hi[%d] = {%s};\n" % (len(pieces), ", ".join(mp.nstr(p[1], 20) for p in pieces)))
-    f.write("static const double dc_hertz_cheb[%d][%d] = {\n" % (len(pieces), DEG + 1))
-    for p in pieces:
-        f.write(" {%s},\n" % ", ".join(mp.nstr(cj, 20) for cj in p[2]))
-    f.write("};\n")
+    f.write("   Chebyshev series (degree %d, uniform pieces) of\n" % DEG)
+    f.write("     h(r) = e^2/(1 - r) on r in [1/4, 1]: worst relative error %s\n" % mp.nstr(hw, 3))
+    f.write("     g(t) = (1 - e^2)/r, t = ln r, on [ln 1e-12, ln 1/4]: worst %s\n" % mp.nstr(gw, 3))
+    f.write("   Piece p of [lo, hi] split in n: x = 2 (s - lo)/w - 2p - 1, w = (hi - lo)/n. */\n")
+    f.write("#define DC_ECC_NCOEF %d\n" % (DEG + 1))
+    f.write("#define DC_ECC_H_PIECES %d\n#define DC_ECC_G_PIECES %d\n" % (len(hp), len(gp)))
+    f.write("#define DC_ECC_G_TLO %s\n#define DC_ECC_G_THI %s\n" % (mp.nstr(T_LO, 20), mp.nstr(T_HI, 20)))
+    for name, pieces in (("dc_ecc_h", hp), ("dc_ecc_g", gp)):
+        f.write("static const double %s[%d][%d] = {\n" % (name, len(pieces), DEG + 1))
+        for c in pieces:
+            f.write(" {%s},\n" % ", ".join(repr(float(cj)) for cj in c))
+        f.write("};\n")

@@ -56,9 +56,12 @@ typedef struct {
   double kn;     /* tangent stiffness dF/d delta = 3/2 F / delta */
 } dc_hertz_state;
 
-/* e^2 from r = R_minor/R_major in [DC_HERTZ_RATIO_MIN, 1] by Newton's method
-   on the exact relation (Eq. 13); returns m1 = 1 - e^2 too, which keeps full
-   relative precision when e^2 -> 1. DC_EDOM outside the domain. */
+/* e^2 solving the exact relation (Eq. 13) for r = R_minor/R_major in
+   [DC_HERTZ_RATIO_MIN, 1], from Chebyshev fits of its solution to rounding
+   (generated with mpmath: tests/reference/gen_hertz_eccentricity_cheb.py);
+   returns m1 = 1 - e^2 too, which keeps full relative precision when
+   e^2 -> 1 (e^2 itself is as precise as 1 - r as r -> 1). DC_EDOM outside
+   the domain. */
 int dc_hertz_eccentricity(double ratio, double *e2, double *m1);
 
 /* e^2 from the closed-form approximation (review Eq. 14), same domain. */
