@@ -36,7 +36,7 @@ void dc_form_principal(const double form[3], double *k1, double *k2, double *the
 {
   const double mean = 0.5 * (form[0] + form[2]);
   const double half = 0.5 * (form[0] - form[2]);
-  const double r = hypot(half, form[1]);
+  const double r = sqrt(half * half + form[1] * form[1]);   /* curvatures: no overflow concern */
   *k1 = mean + r;
   *k2 = mean - r;
   if (theta) *theta = 0.5 * atan2(form[1], half);

@@ -74,7 +74,18 @@ private:
   void bodyForm(LAMMPS_NS::Atom *atom, int i, const double *p, const double *u, const double *v,
                 double *form, LAMMPS_NS::LAMMPS *lmp, const char *model)
   {
-    Superquadric sq(atom->x[i], atom->quaternion[i], atom->shape[i], atom->blockiness[i]);
+    /* the fields shape_function_props_local reads, without Superquadric::set's
+       pow() for koef: koef scales f, grad f and the Hessian alike, so the
+       curvature form Hessian/|grad f| does not depend on it */
+    Superquadric sq;
+    sq.center = atom->x[i];
+    sq.quat = atom->quaternion[i];
+    sq.shape = atom->shape[i];
+    sq.blockiness = atom->blockiness[i];
+    MathExtraLiggghtsNonspherical::quat_to_mat(sq.quat, sq.rotation_matrix);
+    for (int k = 0; k < 3; k++) sq.shape_inv[k] = 1.0 / sq.shape[k];
+    sq.useIntBlockiness = MathExtraLiggghtsNonspherical::isInteger(sq.blockiness[0]) &&
+                          MathExtraLiggghtsNonspherical::isInteger(sq.blockiness[1]);
     double pl[3], ul[3], vl[3], f, g[3], H[9];
     sq.global2local(p, pl);
     MathExtraLiggghtsNonspherical::transpose_matvec(sq.rotation_matrix, u, ul);
