@@ -16,7 +16,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, run, save_reference, subsample, table
+from regress import Checks, ROOT, compare_tables, hertz_impact, impact, run, save_reference, subsample, table
 
 work = sys.argv[1]
 update = "--update" in sys.argv
@@ -43,33 +43,20 @@ for e in ("1.0", "0.5"):
 R, rho, Y, nu = 1e-3, 2500.0, 5e6, 0.3
 m = rho * 4.0 / 3.0 * math.pi * R ** 3
 Estar = 1.0 / (2.0 * (1 - nu ** 2) / Y)           # two equal bodies (wall: same material)
-I = math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9)
 
-
-def impact(rows, overlap):
-    """Collision time (zero crossings interpolated linearly) and max overlap."""
-    d = [overlap(r) for r in rows]
-    t = [r[0] for r in rows]
-    k0 = next(k for k in range(1, len(d)) if d[k] > 0 >= d[k - 1])
-    k1 = next(k for k in range(k0, len(d)) if d[k] <= 0)
-    t0 = t[k0 - 1] + (t[k0] - t[k0 - 1]) * (-d[k0 - 1]) / (d[k0] - d[k0 - 1])
-    t1 = t[k1 - 1] + (t[k1] - t[k1 - 1]) * d[k1 - 1] / (d[k1 - 1] - d[k1])
-    return t1 - t0, max(d)
 
 
 rows = table(runs[("hertz_elliptic", "1.0")])
 cases = [("sphere-sphere", m / 2, R / 2, 1.0, lambda r: 2 * R - (r[2] - r[1])),
          ("sphere-wall", m, R, 1.0, lambda r: R - r[5])]
 for name, mb, Rb, v, ov in cases:
-    Es = Estar if name == "sphere-sphere" else Estar
-    dmax = (15.0 * mb * v * v / (16.0 * Es * math.sqrt(Rb))) ** 0.4
-    tc = 2.0 * I * dmax / v
+    tc, dmax = hertz_impact(mb, v, Estar, Rb)
     tc_sim, dmax_sim = impact(rows, ov)
     # velocity-Verlet with dt = 1e-7 over ~3000 steps: seen errors < 1e-7
     c.rel(dmax_sim, dmax, 1e-6, "%s maximum overlap vs analytic" % name)
     c.rel(tc_sim, tc, 1e-6, "%s collision time vs analytic" % name)
     print("     %s: T_c = %.6e s (notes' 2.87 form: %.6e), delta_max = %.6e m" %
-          (name, tc_sim, 2.87 * (mb * mb / (v * Rb * Es * Es)) ** 0.2, dmax_sim))
+          (name, tc_sim, 2.87 * (mb * mb / (v * Rb * Estar * Estar)) ** 0.2, dmax_sim))
 
 
 

@@ -93,5 +93,27 @@ def save_reference(src, dst, every=1):
                 k += 1
 
 
+def hertz_impact(mass, v, Estar, R_force):
+    """Analytic elastic Hertz impact (lecture notes, 004 seed) for a force
+    4/3 E* R_force^1/2 delta^3/2: (collision time, maximum overlap), with
+    delta_max = (15 m v^2 / (16 E* R_force^1/2))^(2/5) and T_c = 2 I delta_max / v,
+    I = int_0^1 (1 - x^(5/2))^(-1/2) dx = sqrt(pi) Gamma(7/5) / Gamma(9/10)."""
+    dmax = (15.0 * mass * v * v / (16.0 * Estar * math.sqrt(R_force))) ** 0.4
+    I = math.sqrt(math.pi) * math.gamma(1.4) / math.gamma(0.9)
+    return 2.0 * I * dmax / v, dmax
+
+
+def impact(rows, overlap):
+    """Collision time (zero crossings of the overlap interpolated linearly)
+    and maximum overlap of a trajectory; rows start with the time."""
+    d = [overlap(r) for r in rows]
+    t = [r[0] for r in rows]
+    k0 = next(k for k in range(1, len(d)) if d[k] > 0 >= d[k - 1])
+    k1 = next(k for k in range(k0, len(d)) if d[k] <= 0)
+    t0 = t[k0 - 1] + (t[k0] - t[k0 - 1]) * (-d[k0 - 1]) / (d[k0] - d[k0 - 1])
+    t1 = t[k1 - 1] + (t[k1] - t[k1 - 1]) * d[k1 - 1] / (d[k1 - 1] - d[k1])
+    return t1 - t0, max(d)
+
+
 def subsample(rows, every):
     return rows[::every]
