@@ -18,6 +18,9 @@ cases = [
     ("missing youngsModulus", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_no_youngs")), "youngsModulus"),
     ("maxRadiusFactor out of range", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", settings="maxRadiusFactor 0.5"), "maxRadiusFactor must be in (1, 1e12]"),
     ("viscoelastic without viscoelasticTime", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", settings="viscoelastic on"), "viscoelasticTime"),
+    ("roughnessMu outside [1, 50]", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough_mu60")), "roughnessMu = 60 for types 1 and 1 is outside [1, 50]"),
+    ("contact distance too small for the roughness", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough"), x0="0.00099"), "set neigh_modify contact_distance_factor >="),
+    ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
 ]
 for k, (name, deck, variables, message) in enumerate(cases):
