@@ -47,7 +47,7 @@ public:
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
     tangential_damping(true), limitForce(false), viscoelastic(false),
-    maxRadiusFactor(100.0), cmb(c)
+    maxRadiusFactor(100.0)
   {}
 
   void registerSettings(Settings &settings)
@@ -167,7 +167,6 @@ private:
   bool limitForce;
   bool viscoelastic;
   double maxRadiusFactor;
-  class ContactModelBase *cmb;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
 #endif
