@@ -14,21 +14,28 @@ void dc_tangent_basis(const double n[3], double u[3], double v[3])
   v[0] = b; v[1] = s + n[1] * n[1] * a; v[2] = -n[1];
 }
 
-static double quad(const double H[9], const double x[3], const double y[3])
+static void matvec(const double H[9], const double x[3], double y[3])
 {
-  return x[0] * (H[0] * y[0] + H[1] * y[1] + H[2] * y[2])
-       + x[1] * (H[3] * y[0] + H[4] * y[1] + H[5] * y[2])
-       + x[2] * (H[6] * y[0] + H[7] * y[1] + H[8] * y[2]);
+  for (int i = 0; i < 3; i++) y[i] = H[3 * i] * x[0] + H[3 * i + 1] * x[1] + H[3 * i + 2] * x[2];
+}
+
+static double dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
 int dc_curvature_form(const double grad[3], const double hess[9],
                       const double u[3], const double v[3], double form[3])
 {
-  const double g = sqrt(grad[0] * grad[0] + grad[1] * grad[1] + grad[2] * grad[2]);
+  const double g = sqrt(dot(grad, grad));
   if (!(g > 0.0) || !isfinite(g)) return DC_EDOM;
-  form[0] = quad(hess, u, u) / g;
-  form[1] = 0.5 * (quad(hess, u, v) + quad(hess, v, u)) / g;
-  form[2] = quad(hess, v, v) / g;
+  double Hu[3], Hv[3];
+  matvec(hess, u, Hu);
+  matvec(hess, v, Hv);
+  const double inv_g = 1.0 / g;
+  form[0] = dot(u, Hu) * inv_g;
+  form[1] = 0.5 * (dot(u, Hv) + dot(v, Hu)) * inv_g;
+  form[2] = dot(v, Hv) * inv_g;
   return DC_OK;
 }
 
