@@ -8,10 +8,50 @@
 #include <cmath>
 #include "atom.h"
 #include "contact_interface.h"
+#include "global_properties.h"
+#include "property_registry.h"
 #include "vector_liggghts.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
+
+/* Effective radius of a sphere pair (wall: the sphere's radius). */
+inline double sphereEffectiveRadius(const SurfacesIntersectData &sidata)
+{
+  return sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
+}
+
+/* Connects the per-type-pair E*, G* and restitution-damping coefficient. */
+inline void connectElasticProperties(PropertyRegistry &registry, const char *caller,
+                                     double **&Yeff, double **&Geff, double **&betaeff)
+{
+  registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller);
+  registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller);
+  registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller);
+  registry.connect("Yeff", Yeff, caller);
+  registry.connect("Geff", Geff, caller);
+  registry.connect("betaeff", betaeff, caller);
+}
+
+/* For a sphere contact handed to surfacesClose (not touching): the overlap
+   (negative) and normal velocity; fills en and meff for pairs (walls have
+   set them). Both LIGGGHTS callers pass a SurfacesIntersectData. */
+inline double closeSphereContact(SurfacesCloseData &scdata, double &vn)
+{
+  SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+  double delta;
+  if (sidata.is_wall) {
+    delta = sidata.deltan;
+  } else {
+    const double r = sqrt(sidata.rsq);
+    delta = sidata.radsum - r;
+    for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
+    sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+  }
+  const double *vi = sidata.v_i, *vj = sidata.v_j;
+  vn = (vi[0] - vj[0]) * sidata.en[0] + (vi[1] - vj[1]) * sidata.en[1] + (vi[2] - vj[2]) * sidata.en[2];
+  return delta;
+}
 
 /* LIGGGHTS' restitution-based damping coefficient for a tangent stiffness S
    (stock hertz: gamma = -2 sqrt(5/6) beta sqrt(S m), beta = ln e / sqrt(ln^2 e + pi^2)). */
@@ -58,6 +98,26 @@ inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, dou
     }
   }
 #endif
+}
+
+/* Elastic force P with LIGGGHTS' restitution damping on the tangent
+   stiffness Sn (none where Sn <= 0), clipped at 0 with limitForce, stored
+   in sidata with the stiffnesses kn, kt, and applied. */
+inline void dampedNormalForce(SurfacesIntersectData &sidata, double P, double vn, double Sn,
+                              double kn, double kt, double betaeff, bool tangential_damping,
+                              bool limitForce, double nktv2p, double **x,
+                              ForceData &i_forces, ForceData &j_forces)
+{
+  const double gamman = restitutionDamping(betaeff, Sn > 0.0 ? Sn : 0.0, sidata.meff);
+  const double gammat = tangential_damping ? restitutionDamping(betaeff, kt, sidata.meff) : 0.0;
+  double Fn = -gamman * vn + P / nktv2p;
+  if (limitForce && Fn < 0.0) Fn = 0.0;
+  sidata.Fn = Fn;
+  sidata.kn = kn / nktv2p;
+  sidata.kt = kt / nktv2p;
+  sidata.gamman = gamman;
+  sidata.gammat = gammat;
+  applyNormalForce(sidata, Fn, x, i_forces, j_forces);
 }
 
 }

@@ -76,13 +76,8 @@ public:
   void connectToProperties(PropertyRegistry &registry)
   {
     const char *caller = "model gw_rough";
-    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller);
-    registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller);
-    registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller);
+    connectElasticProperties(registry, caller, Yeff, Geff, betaeff);
     registry.registerProperty("surfaceRoughness", &createRoughness, caller);
-    registry.connect("Yeff", Yeff, caller);
-    registry.connect("Geff", Geff, caller);
-    registry.connect("betaeff", betaeff, caller);
     registry.connect("surfaceRoughness", roughness, caller);
     ntypes = registry.max_type();
     if (gwElliptic) {
@@ -117,22 +112,10 @@ public:
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     const double sigma = roughness[scdata.itype][scdata.jtype];
     if (sigma == 0.0) return;
-    /* both callers pass a SurfacesIntersectData; walls have filled en, r */
-    SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-    double delta, r;
-    if (sidata.is_wall) {
-      delta = sidata.deltan;             /* negative: -gap */
-      r = sidata.r;
-    } else {
-      r = sqrt(sidata.rsq);
-      delta = sidata.radsum - r;
-      for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
-      sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
-    }
+    double vn;
+    const double delta = closeSphereContact(scdata, vn);
     if (delta <= -3.0 * sigma) return;
-    const double *vj = sidata.v_j;
-    const double vn = (sidata.v_i[0] - vj[0]) * sidata.en[0] + (sidata.v_i[1] - vj[1]) * sidata.en[1]
-                    + (sidata.v_i[2] - vj[2]) * sidata.en[2];
+    SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
     sidata.has_force_update = true;
     roughForce(sidata, delta, vn, i_forces, j_forces);
   }
@@ -146,7 +129,7 @@ private:
                   ForceData &i_forces, ForceData &j_forces)
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
-    const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+    const double reff = sphereEffectiveRadius(sidata);
     const double sigma = roughness[itype][jtype];
     const double Y = Yeff[itype][jtype];
     const double reach = sidata.is_wall ? sidata.radi : sidata.radsum;
@@ -180,19 +163,10 @@ private:
       kn = delta > 0.0 ? P / delta : 0.0;
       if (delta > 0.0) kt = 8. * Geff[itype][jtype] * sqrt(reff * delta);
     }
-    /* the Feng quartic of Case III is not monotonic for every mu (dP/d delta < 0
-       near alpha' = -2.5 at mu = 4): no damping where the stiffness is negative */
-    const double gamman = restitutionDamping(betaeff[itype][jtype], Sn > 0.0 ? Sn : 0.0, sidata.meff);
-    const double gammat = tangential_damping ? restitutionDamping(betaeff[itype][jtype], kt, sidata.meff) : 0.0;
-
-    double Fn = -gamman * vn + P / force->nktv2p;
-    if (limitForce && Fn < 0.0) Fn = 0.0;
-    sidata.Fn = Fn;
-    sidata.kn = kn / force->nktv2p;
-    sidata.kt = kt / force->nktv2p;
-    sidata.gamman = gamman;
-    sidata.gammat = gammat;
-    applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
+    /* damping needs Sn > 0: the Feng quartic of Case III is not monotonic
+       for every mu (dP/d delta < 0 near alpha' = -2.5 at mu = 4) */
+    dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
+                      limitForce, force->nktv2p, atom->x, i_forces, j_forces);
   }
 
   static MatrixProperty *createRoughness(PropertyRegistry &registry, const char *caller, bool sanity_checks)

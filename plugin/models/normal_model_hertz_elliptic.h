@@ -95,7 +95,7 @@ public:
     const double meff = sidata.meff;
 
     /* R_force and R_area: the effective radius for spheres (stock hertz) */
-    double r_force = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+    double r_force = sphereEffectiveRadius(sidata);
     double r_area = r_force;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (sidata.is_non_spherical && atom->superquadric_flag)

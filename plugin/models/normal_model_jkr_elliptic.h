@@ -64,13 +64,8 @@ public:
   void connectToProperties(PropertyRegistry &registry)
   {
     const char *caller = "model jkr_elliptic";
-    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller);
-    registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller);
-    registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller);
+    connectElasticProperties(registry, caller, Yeff, Geff, betaeff);
     registry.registerProperty("workOfAdhesion", &createWork, caller);
-    registry.connect("Yeff", Yeff, caller);
-    registry.connect("Geff", Geff, caller);
-    registry.connect("betaeff", betaeff, caller);
     registry.connect("workOfAdhesion", work, caller);
   }
 
@@ -97,27 +92,16 @@ public:
       formed = 0.0;
       return;
     }
-    /* both callers pass a SurfacesIntersectData; walls have filled en, r, meff */
+    double vn;
+    const double delta = closeSphereContact(scdata, vn);
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-    double delta;
-    if (sidata.is_wall) {
-      delta = sidata.deltan;
-    } else {
-      const double r = sqrt(sidata.rsq);
-      delta = sidata.radsum - r;
-      for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
-      sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
-    }
-    const double reff = effectiveRadius(sidata);
+    const double reff = sphereEffectiveRadius(sidata);
     if (delta < dc_jkr_sphere_delta_break(reff, Yeff[sidata.itype][sidata.jtype], w)) {
       if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
       formed = 0.0;
       return;
     }
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
-    const double *vj = sidata.v_j;
-    const double vn = (sidata.v_i[0] - vj[0]) * sidata.en[0] + (sidata.v_i[1] - vj[1]) * sidata.en[1]
-                    + (sidata.v_i[2] - vj[2]) * sidata.en[2];
     sidata.has_force_update = true;
     jkrForce(sidata, delta, vn, i_forces, j_forces);
   }
@@ -126,18 +110,13 @@ public:
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-  static double effectiveRadius(const SurfacesIntersectData &sidata)
-  {
-    return sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
-  }
-
   /* On forming a contact: can LIGGGHTS follow it down to delta_break? */
   void checkReach(const SurfacesIntersectData &sidata)
   {
     const double w = work[sidata.itype][sidata.jtype];
     if (w == 0.0) return;
     const double reach = sidata.is_wall ? sidata.radi : sidata.radsum;
-    const double need = 1.0 - dc_jkr_sphere_delta_break(effectiveRadius(sidata), Yeff[sidata.itype][sidata.jtype], w) / reach;
+    const double need = 1.0 - dc_jkr_sphere_delta_break(sphereEffectiveRadius(sidata), Yeff[sidata.itype][sidata.jtype], w) / reach;
     if (neighbor->contactDistanceFactor < need) {
       char msg[256];
       snprintf(msg, sizeof msg, "Normal model jkr_elliptic: adhesive contacts are kept until separation: "
@@ -150,7 +129,7 @@ private:
                 ForceData &i_forces, ForceData &j_forces)
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
-    const double reff = effectiveRadius(sidata);
+    const double reff = sphereEffectiveRadius(sidata);
     const double Y = Yeff[itype][jtype], G = Geff[itype][jtype], w = work[itype][jtype];
     double P, Sn, kn, kt;
     if (w == 0.0) {
@@ -169,15 +148,8 @@ private:
       kt = 8.0 * G * s.a;
       kn = Sn;
     }
-    const double gamman = restitutionDamping(betaeff[itype][jtype], Sn, sidata.meff);
-    const double gammat = tangential_damping ? restitutionDamping(betaeff[itype][jtype], kt, sidata.meff) : 0.0;
-    const double Fn = -gamman * vn + P / force->nktv2p;
-    sidata.Fn = Fn;
-    sidata.kn = kn / force->nktv2p;
-    sidata.kt = kt / force->nktv2p;
-    sidata.gamman = gamman;
-    sidata.gammat = gammat;
-    applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
+    dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
+                      false, force->nktv2p, atom->x, i_forces, j_forces);
   }
 
   static MatrixProperty *createWork(PropertyRegistry &registry, const char *caller, bool sanity_checks)
