@@ -15,6 +15,7 @@
    separation point to delta = 50 |delta_break| in 10^4 steps (warm: the hint
    carried from step to step, as in a DEM run; cold: the same overlaps with
    no hint), for R_minor/R_major = 0.5, 0.1, 0.01 and 0.001. */
+#include "../unit/check.h"
 #include "dc/jkr_elliptic.h"
 #include <math.h>
 #include <stdio.h>
@@ -33,28 +34,6 @@ static double now(void)
 
 static volatile double sink;
 
-static FILE *open_ref(const char *name)
-{
-  char path[1024];
-  snprintf(path, sizeof path, "%s", __FILE__);
-  char *sl = strrchr(path, '/');
-  if (sl) *sl = 0;
-  strncat(path, "/../reference/", sizeof path - strlen(path) - 1);
-  strncat(path, name, sizeof path - strlen(path) - 1);
-  FILE *f = fopen(path, "r");
-  if (!f) printf("cannot open %s\n", path);
-  return f;
-}
-
-static int read_row(FILE *f, double *v, int n)
-{
-  char line[2048];
-  if (!fgets(line, sizeof line, f)) return 0;
-  int k = 0;
-  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
-  return k;
-}
-
 static double cond(const dc_jkr_state *s)
 {
   double c = fabs(s->delta * s->kn / s->F);
@@ -64,10 +43,10 @@ static double cond(const dc_jkr_state *s)
 static void bench_sphere(void)
 {
   double emax = 0, eunits = 0, v[6];
-  FILE *f = open_ref("jkr_sphere.csv");
+  FILE *f = check_open_reference("jkr_sphere.csv");
   if (f) {
-    read_row(f, v, 6);
-    while (read_row(f, v, 6) == 6) {
+    check_read_row(f, v, 6);
+    while (check_read_row(f, v, 6) == 6) {
       dc_jkr_state s;
       dc_jkr_sphere(v[0], v[1], v[2], v[3], &s);
       const double e = fabs(s.F / v[4] - 1);
@@ -97,10 +76,10 @@ static void bench_elliptic(void)
   /* accuracy vs the mpmath table, cold and warm */
   double ecold = 0, ewarm = 0, ucold = 0, uwarm = 0, egeo = 0, v[12];
   int rows = 0;
-  FILE *f = open_ref("jkr_elliptic_force.csv");
+  FILE *f = check_open_reference("jkr_elliptic_force.csv");
   if (f) {
-    read_row(f, v, 11);
-    while (read_row(f, v, 11) == 11) {
+    check_read_row(f, v, 11);
+    while (check_read_row(f, v, 11) == 11) {
       dc_jkr_geom G;
       dc_jkr_geometry(v[1], v[2], v[3], v[4], &G);
       dc_jkr_state s, t;
@@ -118,10 +97,10 @@ static void bench_elliptic(void)
     }
     fclose(f);
   }
-  f = open_ref("jkr_elliptic_extrema.csv");
+  f = check_open_reference("jkr_elliptic_extrema.csv");
   if (f) {
-    read_row(f, v, 12);
-    while (read_row(f, v, 12) == 12) {
+    check_read_row(f, v, 12);
+    while (check_read_row(f, v, 12) == 12) {
       dc_jkr_geom G;
       dc_jkr_geometry(v[1], v[2], v[3], v[4], &G);
       egeo = fmax(egeo, fabs(G.F_pull / v[11] - 1));

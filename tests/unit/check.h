@@ -5,6 +5,8 @@
 #define DC_CHECK_H
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 static int check_passed_, check_failed_;
 
@@ -50,6 +52,16 @@ static int check_summary(const char *suite)
 {
   printf("%s: %d passed, %d failed\n", suite, check_passed_, check_failed_);
   return check_failed_ ? 1 : 0;
+}
+
+/* Reads one comma-separated row of up to n numbers; returns how many. */
+static int check_read_row(FILE *f, double *v, int n)
+{
+  char line[2048];
+  if (!fgets(line, sizeof line, f)) return 0;
+  int k = 0;
+  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
+  return k;
 }
 
 /* Opens a committed reference table (path relative to tests/reference). */

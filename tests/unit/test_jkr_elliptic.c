@@ -14,15 +14,6 @@
 #define EPS 2.220446049250313e-16
 
 /* Reads up to n doubles of one CSV row (first field may be text). */
-static int read_row(FILE *f, double *v, int n)
-{
-  char line[2048];
-  if (!fgets(line, sizeof line, f)) return 0;
-  int k = 0;
-  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
-  return k;
-}
-
 static void skip_header(FILE *f)
 {
   char line[2048];
@@ -46,7 +37,7 @@ static void test_sphere_table(void)
   skip_header(f);
   double v[6];
   int rows = 0;
-  while (read_row(f, v, 6) == 6) {
+  while (check_read_row(f, v, 6) == 6) {
     const double R = v[0], E = v[1], w = v[2], delta = v[3], F = v[4], a = v[5];
     dc_jkr_state s;
     CHECK(dc_jkr_sphere(R, E, w, delta, &s) == DC_OK);
@@ -106,7 +97,7 @@ static void test_extrema_table(void)
   double v[12];
   int rows = 0;
   printf("ratio      F_pull/(1.5 pi w Rhat)  delta_break/delta_break(sphere, Rhat)\n");
-  while (read_row(f, v, 12) == 12) {
+  while (check_read_row(f, v, 12) == 12) {
     dc_jkr_geom G;
     CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
     CHECK_REL(G.e2_hertz, v[5], 1e-13, "e2 Hertz");
@@ -138,7 +129,7 @@ static void test_force_table(void)
   double v[11];
   int rows = 0;
   double worst = 0, worst_kd = 0, worst_fd = 0, worst_fF = 0;
-  while (read_row(f, v, 11) == 11) {
+  while (check_read_row(f, v, 11) == 11) {
     dc_jkr_geom G;
     CHECK(dc_jkr_geometry(v[1], v[2], v[3], v[4], &G) == DC_OK);
     dc_jkr_state s;
