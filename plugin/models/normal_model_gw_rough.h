@@ -1,15 +1,18 @@
 /* LIGGGHTS normal model `gw_rough`: Greenwood-Williamson rough contact of
-   spheres (c_core: dc/feng_rough.h, Feng et al. 2016 Eq. 75; dc/gw_rough.h,
-   review Eqs. 29-36).
+   spheres and superquadrics (c_core: dc/feng_rough.h, Feng et al. 2016
+   Eq. 75; dc/gw_rough.h, review Eqs. 29-36).
 
-   Deck: pair_style gran model gw_rough tangential history [settings]
-         fix ID all wall/gran model gw_rough tangential history primitive ... [settings]
+   Deck: pair_style gran model gw_rough tangential history [surface superquadric] [settings]
+         fix ID all wall/gran model gw_rough tangential history [surface superquadric] primitive ... [settings]
          neigh_modify contact_distance_factor F   (see below)
    Settings:
-     gwElliptic on|off   off: Feng explicit law (default); on: GW closed form
-                         F = 4/3 n_asp E* Rc^1/2 sigma^3/2 gamma F_3/2(-delta/sigma)
+     gwElliptic on|off   off: Feng explicit law (default, spheres only); on:
+                         GW closed form F = 4/3 n_asp E* Rc^1/2 sigma^3/2 gamma
+                         F_3/2(-delta/sigma) (required for superquadrics)
      fengFitted on|off   Feng law coefficients from the fitted formulas instead
                          of the interpolated tables (default off)
+     maxRadiusFactor R   superquadrics: cap on the relative principal radii,
+                         as in hertz_elliptic (default 100)
      tangential_damping on|off, limitForce on|off   as in stock hertz
    Properties: youngsModulus, poissonsRatio, coefficientRestitution,
      surfaceRoughness peratomtype [m]: rms summit height sigma_i of each type
@@ -20,12 +23,16 @@
    form decays like a Gaussian tail and is cut there too), i.e. before the
    spheres touch: LIGGGHTS calls surfacesClose for pairs within
    contact_distance_factor * (r_i + r_j), so the deck must set
-   contact_distance_factor >= 1 + 3 sigma / (r_i + r_j) (walls: 1 + 3 sigma / r_i)
-   for every rough pair; the model stops the run, naming the value needed,
+   contact_distance_factor >= 1 + 3 sigma / (r_i + r_j) (walls: 1 + 3 sigma / r_i;
+   superquadrics: bounding radii for pairs, volume-equivalent radius for
+   walls) for every rough pair; the model stops the run, naming the value needed,
    when a rough contact is computed with a smaller factor. Damping: LIGGGHTS'
    restitution damping on the law's tangent stiffness dF/d(delta); the
    tangential stiffness is Mindlin's 8 G (R delta)^1/2 once delta > 0.
-   sigma = 0 gives exactly `hertz_elliptic` (the same arithmetic). */
+   Superquadrics: relative principal radii from both surfaces' curvatures
+   (superquadric_curvature.h) and, before touch, the gap measured by
+   superquadric_gap.h. sigma = 0 gives exactly `hertz_elliptic` (the same
+   arithmetic). */
 #ifdef NORMAL_MODEL
 NORMAL_MODEL(GW_ROUGH,gw_rough,31)
 #else
@@ -40,6 +47,8 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,31)
 #include "neighbor.h"
 #include "normal_model_base.h"
 #include "normal_force_common.h"
+#include "superquadric_curvature.h"
+#include "superquadric_gap.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
 #include "dc/hertz_elliptic.h"
@@ -56,8 +65,12 @@ public:
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), betaeff(NULL), roughness(NULL), mu(NULL), n_asp(NULL),
     tangential_damping(true), limitForce(false), gwElliptic(false), fengFitted(false),
-    ntypes(0)
-  {}
+    maxRadiusFactor(100.0), ntypes(0)
+  {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    gap.addHistory(lmp, hsetup);
+#endif
+  }
 
   void registerSettings(Settings &settings)
   {
@@ -65,12 +78,22 @@ public:
     settings.registerOnOff("limitForce", limitForce);
     settings.registerOnOff("gwElliptic", gwElliptic, false);
     settings.registerOnOff("fengFitted", fengFitted, false);
+    settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
   }
 
-  void postSettings(IContactHistorySetup *, ContactModelBase *)
+  void postSettings(IContactHistorySetup *, ContactModelBase *c)
   {
-    if (atom->superquadric_flag)
-      error->all(FLERR, "Normal model gw_rough: superquadric particles are not supported yet (spheres only)");
+    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12))
+      error->all(FLERR, "Normal model gw_rough: maxRadiusFactor must be in (1, 1e12]");
+    if (atom->superquadric_flag && !gwElliptic)
+      error->all(FLERR, "Normal model gw_rough: superquadric particles need the elliptic closed form: "
+                 "add 'gwElliptic on' (the Feng law is for spheres)");
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    curvature.setup(lmp, c, maxRadiusFactor, "gw_rough");
+    gap.setup(lmp, c);
+#else
+    (void)c;
+#endif
   }
 
   void connectToProperties(PropertyRegistry &registry)
@@ -106,16 +129,26 @@ public:
     roughForce(sidata, sidata.deltan, sidata.vn, i_forces, j_forces);
   }
 
-  /* Rough contact before the spheres touch: -3 sigma < delta < 0. */
+  /* Rough contact before the surfaces touch: -3 sigma < delta < 0. */
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     const double sigma = roughness[scdata.itype][scdata.jtype];
     if (sigma == 0.0) return;
-    double vn;
-    const double delta = closeSphereContact(scdata, vn);
-    if (delta <= -3.0 * sigma) return;
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+    double delta, vn;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (atom->superquadric_flag) {
+      if (sidata.is_wall) {
+        delta = -sidata.deltan;
+        vn = SuperquadricGap::contactNormalVelocity(atom, sidata);
+      } else if (!gap.pairOverlap(lmp, sidata, 3.0 * sigma, delta, vn)) {
+        return;
+      }
+    } else
+#endif
+    delta = closeSphereContact(scdata, vn);
+    if (delta <= -3.0 * sigma) return;
     sidata.has_force_update = true;
     roughForce(sidata, delta, vn, i_forces, j_forces);
   }
@@ -129,7 +162,7 @@ private:
                   ForceData &i_forces, ForceData &j_forces)
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
-    const double reff = sphereEffectiveRadius(sidata);
+    double reff = sphereEffectiveRadius(sidata);
     const double sigma = roughness[itype][jtype];
     const double Y = Yeff[itype][jtype];
     const double reach = sidata.is_wall ? sidata.radi : sidata.radsum;
@@ -139,15 +172,25 @@ private:
                "set neigh_modify contact_distance_factor >= %.6g", 3.0 * sigma, 1.0 + 3.0 * sigma / reach);
       error->one(FLERR, msg);
     }
+    /* the smooth contact's geometry; spheres: circular with Rc = reff */
+    dc_hertz_geom g;
+    g.R_force = g.R_area = reff;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (sidata.is_non_spherical && atom->superquadric_flag) {
+      double R_major, R_minor;
+      curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_rough");
+      geometry(R_major, R_minor, g);
+      reff = g.Rc;
+    } else
+#endif
+    if (gwElliptic && sigma != 0.0) geometry(reff, reff, g);
     double P, Sn, kn, kt = 0.0;
     if (sigma == 0.0) {
-      hertzStiffness(Y, Geff[itype][jtype], reff, reff, delta, kn, Sn, kt);
+      hertzStiffness(Y, Geff[itype][jtype], g.R_force, g.R_area, delta, kn, Sn, kt);
       P = kn * delta;
     } else {
       int st;
       if (gwElliptic) {
-        dc_hertz_geom g;
-        dc_hertz_geometry(reff, reff, &g);
         dc_gw_rough_state s;
         st = dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
         P = s.F;
@@ -161,12 +204,22 @@ private:
         error->one(FLERR, msg);
       }
       kn = delta > 0.0 ? P / delta : 0.0;
-      if (delta > 0.0) kt = 8. * Geff[itype][jtype] * sqrt(reff * delta);
+      if (delta > 0.0) kt = 8. * Geff[itype][jtype] * sqrt(g.R_area * delta);
     }
     /* damping needs Sn > 0: the Feng quartic of Case III is not monotonic
        for every mu (dP/d delta < 0 near alpha' = -2.5 at mu = 4) */
     dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
                       limitForce, force->nktv2p, atom->x, i_forces, j_forces);
+  }
+
+  void geometry(double R1, double R2, dc_hertz_geom &g)
+  {
+    const int st = dc_hertz_geometry(R1, R2, &g);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Normal model gw_rough: relative radii %g, %g: %s", R1, R2, dc_status_str(st));
+      error->one(FLERR, msg);
+    }
   }
 
   static MatrixProperty *createRoughness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
@@ -197,8 +250,13 @@ private:
 
   double **Yeff, **Geff, **betaeff, **roughness, **mu, **n_asp;
   bool tangential_damping, limitForce, gwElliptic, fengFitted;
+  double maxRadiusFactor;
   int ntypes;
   std::vector<dc_feng_law> laws;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  SuperquadricCurvature curvature;
+  SuperquadricGap gap;
+#endif
 };
 
 }

@@ -18,7 +18,8 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, hertz_impact, impact, run, save_reference, subsample, table
+from regress import (Checks, ROOT, compare_tables, elliptic_hertz, hertz_impact, impact, relative_radii, run,
+                     save_reference, subsample, table)
 
 work = sys.argv[1]
 update = "--update" in sys.argv
@@ -27,47 +28,9 @@ c = Checks("superquadric_impact")
 EVERY = 10
 
 
-def KE(m):
-    """Complete elliptic integrals by the AGM (A-S 17.6)."""
-    a, b, s, w = 1.0, math.sqrt(1.0 - m), m / 2.0, 0.5
-    for _ in range(60):
-        if abs(a - b) <= 4e-16 * a:
-            break
-        cn = (a - b) / 2.0
-        a, b = (a + b) / 2.0, math.sqrt(a * b)
-        w *= 2.0
-        s += w * cn * cn
-    K = math.pi / (2.0 * a)
-    return K, K * (1.0 - s)
-
-
 def R_force(R1, R2):
-    """Rc gamma^2 of review Eqs. 5, 11, 13 (r = R_minor/R_major)."""
-    Rmaj, Rmin = max(R1, R2), min(R1, R2)
-    r = Rmin / Rmaj
-    Rc = Rmaj * Rmin / (Rmaj + Rmin)
-    if r == 1.0:
-        return Rc * 2.0
-    g = lambda m: m - (1.0 - r * KE(m)[1] / ((1.0 + r) * KE(m)[0] - KE(m)[1]))
-    lo, hi = 1e-12, 1.0 - 1e-16          # g < 0 just above 0 (for r < 1), g > 0 near 1
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if g(mid) < 0.0:
-            lo = mid
-        else:
-            hi = mid
-    m = 0.5 * (lo + hi)
-    K, E = KE(m)
-    gamma = math.pi * math.sqrt(2.0) * math.sqrt(E) / (2.0 * K ** 1.5 * math.sqrt(1.0 - m))
+    Rc, gamma = elliptic_hertz(R1, R2)
     return Rc * gamma * gamma
-
-
-def radii(k1I, k2I, k1II, k2II, w):
-    """Review Eqs. 3-4."""
-    s = k1I + k2I + k1II + k2II
-    d = math.sqrt((k1I - k2I) ** 2 + (k1II - k2II) ** 2 + 2 * (k1I - k2I) * (k1II - k2II) * math.cos(2 * w))
-    return 2.0 / (s - d), 2.0 / (s + d)
-
 
 
 rho, Y, nu = 2500.0, 5e6, 0.3
@@ -86,7 +49,7 @@ for omega in ("0", "60"):
     w = math.radians(float(omega))
     cases = [("wall", m1, 1.0, R_force(a1 * a1 / c1, b1 * b1 / c1), lambda r: c1 - r[1]),
              ("pair omega=%s" % omega, m2 / 2, 1.0,
-              R_force(*radii(a2 / b2 ** 2, a2 / c2 ** 2, a2 / b2 ** 2, a2 / c2 ** 2, w)),
+              R_force(*relative_radii(a2 / b2 ** 2, a2 / c2 ** 2, a2 / b2 ** 2, a2 / c2 ** 2, w)),
               lambda r: 2 * a2 - (r[4] - r[3]))]
     for name, mb, v, Rf, ov in cases:
         if name == "wall" and omega != "0":

@@ -117,3 +117,47 @@ def impact(rows, overlap):
 
 def subsample(rows, every):
     return rows[::every]
+
+
+def ellipke(m):
+    """Complete elliptic integrals K(m), E(m) by the AGM (A-S 17.6)."""
+    a, b, s, w = 1.0, math.sqrt(1.0 - m), m / 2.0, 0.5
+    for _ in range(60):
+        if abs(a - b) <= 4e-16 * a:
+            break
+        cn = (a - b) / 2.0
+        a, b = (a + b) / 2.0, math.sqrt(a * b)
+        w *= 2.0
+        s += w * cn * cn
+    K = math.pi / (2.0 * a)
+    return K, K * (1.0 - s)
+
+
+def elliptic_hertz(R1, R2):
+    """(Rc, gamma) of review Eqs. 5, 11, 13 for relative principal radii R1,
+    R2, independent of c_core: bisection on Eq. 13 in its original form with
+    r = R_minor/R_major. F = 4/3 E* Rc^1/2 delta^3/2 gamma."""
+    Rmaj, Rmin = max(R1, R2), min(R1, R2)
+    r = Rmin / Rmaj
+    Rc = Rmaj * Rmin / (Rmaj + Rmin)
+    if r == 1.0:
+        return Rc, math.sqrt(2.0)
+    g = lambda m: m - (1.0 - r * ellipke(m)[1] / ((1.0 + r) * ellipke(m)[0] - ellipke(m)[1]))
+    lo, hi = 1e-12, 1.0 - 1e-16          # g < 0 just above 0 (for r < 1), g > 0 near 1
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if g(mid) < 0.0:
+            lo = mid
+        else:
+            hi = mid
+    m = 0.5 * (lo + hi)
+    K, E = ellipke(m)
+    return Rc, math.pi * math.sqrt(2.0) * math.sqrt(E) / (2.0 * K ** 1.5 * math.sqrt(1.0 - m))
+
+
+def relative_radii(k1I, k2I, k1II, k2II, w):
+    """Relative principal radii from the principal curvatures of two bodies
+    whose principal directions make the angle w (review Eqs. 3-4)."""
+    s = k1I + k2I + k1II + k2II
+    d = math.sqrt((k1I - k2I) ** 2 + (k1II - k2II) ** 2 + 2 * (k1I - k2I) * (k1II - k2II) * math.cos(2 * w))
+    return 2.0 / (s - d), 2.0 / (s + d)
