@@ -16,8 +16,9 @@
    - Eq. 39's first term lacks the rate: it must be A ddelta/dt times the
      contact stiffness (Eq. 37).
 
-   Corrected law (derived here; it is the one Brilliantov et al., Phys. Rev.
-   E 76 (2007) 051302, write in the contact radius a). In the quasi-static
+   Corrected law (derived here; the review cites Brilliantov et al., Phys.
+   Rev. E 76 (2007) 051302, whose text we could not obtain: that its
+   contact-radius form is the one below is not verified). In the quasi-static
    viscoelastic regime the dissipative stress is A times the elastic stress
    of the displacement-rate field (A: the dissipative constant of review
    Eq. 37, units s). Inside the contact the surface follows the rigid
@@ -59,7 +60,7 @@ int dc_dissip_adhesive_ab(double A, double Estar, double a, double b, double dde
    state; zero when s->contact == 0. */
 int dc_dissip_adhesive_state(double A, double Estar, const dc_jkr_state *s, double ddelta, double *F_dis);
 
-/* Contact-radius form for spheres (Brilliantov et al. 2007): F_dis =
+/* Contact-radius form for spheres: F_dis =
    A (da/dt) d/da [4 E* a^3/(3R) - (8 pi w E* a^3)^1/2 / 3]. Equal to
    dc_dissip_adhesive_ab(A, E*, a, a, ddelta) when da/dt is the JKR rate. */
 int dc_dissip_adhesive_radius_rate(double A, double R, double Estar, double w, double a, double da_dt,
