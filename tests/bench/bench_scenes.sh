@@ -35,16 +35,24 @@ t_sh=$(loop_time "$sph" hertz 10000 1)
 t_se=$(loop_time "$sph" hertz_elliptic 10000 1)
 t_sr=$(loop_time "$sph" gw_rough 10000 1 "-var cdf 1.05")
 t_sj=$(loop_time "$sph" jkr_elliptic 10000 1 "-var cdf 1.02")
+# the same contact distance without the rough law, and the JKR solve on a
+# (practically) non-adhesive trajectory: the laws' own cost
+t_sh5=$(loop_time "$sph" hertz 10000 1 "-var cdf 1.05")
+t_se2=$(loop_time "$sph" hertz_elliptic 10000 1 "-var cdf 1.02")
+t_sj0=$(loop_time "$sph" jkr_elliptic 10000 1 "-var cdf 1.02 -var w 1e-9")
 t_qh=$(loop_time "$sq" hertz 15000 1)
 t_qe=$(loop_time "$sq" hertz_elliptic 15000 1)
 t_q2=$(loop_time "$sq" hertz_elliptic 15000 2)
-python3 - "$t_sh" "$t_se" "$t_qh" "$t_qe" "$t_q2" "$t_sr" "$t_sj" <<'PY'
+python3 - "$t_sh" "$t_se" "$t_qh" "$t_qe" "$t_q2" "$t_sr" "$t_sj" "$t_sh5" "$t_se2" "$t_sj0" <<'PY'
 import sys
-sh, se, qh, qe, q2, sr, sj = map(float, sys.argv[1:])
+sh, se, qh, qe, q2, sr, sj, sh5, se2, sj0 = map(float, sys.argv[1:])
 print("scene (best of runs, loop time)                     stock hertz  hertz_elliptic  ratio")
 print("2888 spheres settling, 10000 steps, 1 rank          %9.3f s   %9.3f s     %.4f" % (sh, se, se / sh))
 print("324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh))
 print("2888 spheres: gw_rough (Feng, sigma = 0.01 r) %.3f s = %.4f x stock hertz" % (sr, sr / sh))
+print("    same contact distance (1.05): stock hertz %.3f s; gw_rough = %.4f x" % (sh5, sr / sh5))
 print("2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se))
+print("    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
+      "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2))
 print("324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2))
 PY
