@@ -1,10 +1,13 @@
 /* dclaw gw_rough: GW rough normal force of two bodies versus overlap, CSV:
    the elliptic closed form (review Eqs. 29-36, on the hertz_elliptic
    geometry) and, for the sphere-equivalent radius, the Feng et al. explicit
-   law (Feng Eq. 75) in its table and fitted variants. */
+   law (Feng Eq. 75) in its table and fitted variants; with --w > 0 also the
+   GW force with adhesive JKR summits on loading and unloading
+   (dc/gw_rough_adhesive.h). */
 #include "cli.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
+#include "dc/gw_rough_adhesive.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
 #include <math.h>
@@ -22,8 +25,9 @@ int cmd_gw_rough(int argc, char **argv)
     {"delta_min", "first overlap [m] (negative: separated)", -3e-6, 0},
     {"delta_max", "last overlap [m]", 1e-5, 0},
     {"n", "number of overlaps", 14, 0},
+    {"w", "work of adhesion [J/m^2]; > 0 adds the adhesive (JKR summit) GW force, loading and unloading", 0, 0},
     {0, 0, 0, 0}};
-  int st = dc_cli_parse(argc, argv, o, "--R1 R --R2 R --Estar E --sigma s --n_asp N --mu mu --delta_min d --delta_max d --n N");
+  int st = dc_cli_parse(argc, argv, o, "--R1 R --R2 R --Estar E --sigma s --n_asp N --mu mu --delta_min d --delta_max d --n N [--w w]");
   if (st) return st == 1 ? 0 : st;
   dc_hertz_geom g;
   if (dc_hertz_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), &g)) {
@@ -41,7 +45,14 @@ int cmd_gw_rough(int argc, char **argv)
   const double d0 = dc_cli_get(o, "delta_min"), d1 = dc_cli_get(o, "delta_max");
   /* Feng's law is for spheres: use the radius of the Hertz force, Rc gamma^2 */
   const double R = g.R_force;
-  printf("delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted\n");
+  const double w = dc_cli_get(o, "w");
+  dc_jkr_geom jg;
+  if (!(w >= 0) || (w > 0 && dc_jkr_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), E, w, &jg))) {
+    fprintf(stderr, "dclaw gw_rough: --w, R1, R2, Estar: need w >= 0 finite, ratio >= %g, Estar > 0\n", DC_JKR_RATIO_MIN);
+    return 2;
+  }
+  printf("delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted%s\n",
+         w > 0 ? ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading" : "");
   for (int i = 0; i < n; i++) {
     const double d = n == 1 ? d0 : d0 + (d1 - d0) * i / (n - 1);
     dc_gw_rough_state rs;
@@ -51,7 +62,14 @@ int cmd_gw_rough(int argc, char **argv)
       fprintf(stderr, "dclaw gw_rough: Estar, sigma, n_asp: need Estar > 0, sigma >= 0, n_asp > 0\n");
       return 2;
     }
-    printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n", d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf);
+    printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf);
+    if (w > 0) {
+      dc_gw_adhesive_state al, au;
+      dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_LOADING, &al);
+      dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_UNLOADING, &au);
+      printf(",%.17g,%.17g,%.17g,%.17g", al.F, al.area, au.F, au.area);
+    }
+    printf("\n");
   }
   return 0;
 }

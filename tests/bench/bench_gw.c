@@ -1,11 +1,13 @@
 /* GW rough contact: ns per call and max relative error of each evaluation
    path (F_3/2 fast / closed form; rough force closed form, Feng explicit law
-   in both variants, full solver m = 5, 10, 20), then the error map of the
-   explicit law against the solver (tests/reference/gw_feng_error_map.txt
-   is this program's output with the argument "map"). */
+   in both variants, full solver m = 5, 10, 20; GW with adhesive JKR
+   summits), then the error map of the explicit law against the solver
+   (tests/reference/gw_feng_error_map.txt is this program's output with
+   the argument "map"). */
 #include "dc/feng_rough.h"
 #include "dc/gw_integrals.h"
 #include "dc/gw_rough.h"
+#include "dc/gw_rough_adhesive.h"
 #include "dc/gw_solver.h"
 #include <math.h>
 #include <stdio.h>
@@ -108,6 +110,35 @@ static void bench_force(void)
   }
 }
 
+/* GW with JKR summits: h in [-3, 5], both branches alternating, for a sphere
+   and an ellipse (R_minor/R_major = 0.2), at w = 0.1 and 1e-5 (sigma = 1e-7,
+   R_major = 1e-3, E* = 1e9; Fuller-Tabor theta printed). Accuracy: unit
+   test. */
+static void bench_adhesive(void)
+{
+  printf("\nGW with adhesive JKR summits (Eq. 29)     ns/call   summit evaluations per call\n");
+  const double ratios[] = {1.0, 0.2}, ws[] = {0.1, 1e-5};
+  for (int c = 0; c < 2; c++)
+    for (int k = 0; k < 2; k++) {
+      dc_jkr_geom g;
+      dc_jkr_geometry(1e-3, 1e-3 * ratios[c], 1e9, ws[k], &g);
+      const double theta = 1e9 * pow(1e-7, 1.5) / (ws[k] * sqrt(g.Rhat));
+      const int N = c ? 4000 : 10000;
+      long ne = 0;
+      double s = 0, t0 = now();
+      for (int i = 0; i < N; i++) {
+        dc_gw_adhesive_state st;
+        dc_gw_rough_adhesive(&g, 100.0, 1e-7, (3.0 - 8.0 * i / N) * 1e-7, i & 1, &st);
+        s += st.F;
+        ne += st.n_eval;
+      }
+      const double t1 = now();
+      sink = s;
+      printf("  %-7s theta = %-8.2g              %8.0f   %.0f\n", c ? "ellipse" : "sphere", theta,
+             1e9 * (t1 - t0) / N, (double)ne / N);
+    }
+}
+
 static void error_map(void)
 {
   const double mus[] = {1, 2, 4, 7, 10, 20, 35, 50};
@@ -159,6 +190,7 @@ int main(int argc, char **argv)
   if (argc > 1 && !strcmp(argv[1], "map")) { error_map(); return 0; }
   bench_F32();
   bench_force();
+  bench_adhesive();
   error_map();
   return 0;
 }
