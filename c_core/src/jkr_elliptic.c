@@ -166,7 +166,7 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)),
      with 8x^3/pi - 1 = y (3 + 3y + y^2) free of cancellation at the
      separation point */
-  s->kn = finite_kn(8.0 * w * R / Ds * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
+  s->kn = finite_kn(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
   return DC_OK;
 }
 

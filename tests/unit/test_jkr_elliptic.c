@@ -68,6 +68,16 @@ static void test_sphere_closed_forms(void)
   CHECK_REL(s.F, -5.0 / 6.0 * M_PI * w * R, 1e-7, "force at separation -5/6 pi w R");
   CHECK(isfinite(s.kn) && s.kn < -1e6);  /* vertical tangent, F falling */
   CHECK(dc_jkr_sphere(R, E, w, db * (1 + 1e-12), &s) == DC_OK && s.contact == 0 && s.F == 0.0);
+  /* kn = (dF/da)/(d delta/da) of F = 4Ea^3/(3R) - (8 pi w E a^3)^1/2,
+     delta = a^2/R - (2 pi w a/E)^1/2, at the state's a */
+  for (int k = 0; k < 5; k++) {
+    const double d = k < 3 ? db * (0.99 - 0.45 * k) : (k == 3 ? 1e-8 : 1e-6);
+    CHECK(dc_jkr_sphere(R, E, w, d, &s) == DC_OK && s.contact == 1);
+    const double a = s.a;
+    const double want = (4.0 * E * a * a / R - 1.5 * sqrt(8.0 * M_PI * w * E * a)) /
+                        (2.0 * a / R - 0.5 * sqrt(2.0 * M_PI * w / (E * a)));
+    CHECK_REL(s.kn, want, 1e-9, "sphere kn = dF/d delta");
+  }
   /* pull-off by load control: min over a of F(a) at a^3 = 9 pi w R^2/(8E) */
   const double ap = cbrt(9.0 * M_PI * w * R * R / (8.0 * E));
   CHECK(dc_jkr_sphere_at_radius(R, E, w, ap, &s) == DC_OK);
