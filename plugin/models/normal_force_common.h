@@ -33,6 +33,17 @@ inline void connectElasticProperties(PropertyRegistry &registry, const char *cal
   registry.connect("betaeff", betaeff, caller);
 }
 
+/* Connects the per-type-pair viscoelastic time A [s] (`viscoelastic on`). */
+inline MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+{
+  return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
+}
+inline void connectViscoelasticTime(PropertyRegistry &registry, const char *caller, double **&viscoelasticTime)
+{
+  registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller);
+  registry.connect("viscoelasticTime", viscoelasticTime, caller);
+}
+
 /* For a sphere contact handed to surfacesClose (not touching): the overlap
    (negative) and normal velocity; fills en and meff for pairs (walls have
    set them). Both LIGGGHTS callers pass a SurfacesIntersectData. */
@@ -100,16 +111,12 @@ inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, dou
 #endif
 }
 
-/* Elastic force P with LIGGGHTS' restitution damping on the tangent
-   stiffness Sn (none where Sn <= 0), clipped at 0 with limitForce, stored
-   in sidata with the stiffnesses kn, kt, and applied. */
-inline void dampedNormalForce(SurfacesIntersectData &sidata, double P, double vn, double Sn,
-                              double kn, double kt, double betaeff, bool tangential_damping,
-                              bool limitForce, double nktv2p, double **x,
-                              ForceData &i_forces, ForceData &j_forces)
+/* Elastic force P with damping coefficients gamman, gammat, clipped at 0
+   with limitForce, stored in sidata with the stiffnesses kn, kt, and applied. */
+inline void dampedForce(SurfacesIntersectData &sidata, double P, double vn, double gamman, double gammat,
+                        double kn, double kt, bool limitForce, double nktv2p, double **x,
+                        ForceData &i_forces, ForceData &j_forces)
 {
-  const double gamman = restitutionDamping(betaeff, Sn > 0.0 ? Sn : 0.0, sidata.meff);
-  const double gammat = tangential_damping ? restitutionDamping(betaeff, kt, sidata.meff) : 0.0;
   double Fn = -gamman * vn + P / nktv2p;
   if (limitForce && Fn < 0.0) Fn = 0.0;
   sidata.Fn = Fn;
@@ -118,6 +125,18 @@ inline void dampedNormalForce(SurfacesIntersectData &sidata, double P, double vn
   sidata.gamman = gamman;
   sidata.gammat = gammat;
   applyNormalForce(sidata, Fn, x, i_forces, j_forces);
+}
+
+/* dampedForce with LIGGGHTS' restitution damping on the tangent stiffness
+   Sn (none where Sn <= 0). */
+inline void dampedNormalForce(SurfacesIntersectData &sidata, double P, double vn, double Sn,
+                              double kn, double kt, double betaeff, bool tangential_damping,
+                              bool limitForce, double nktv2p, double **x,
+                              ForceData &i_forces, ForceData &j_forces)
+{
+  const double gamman = restitutionDamping(betaeff, Sn > 0.0 ? Sn : 0.0, sidata.meff);
+  const double gammat = tangential_damping ? restitutionDamping(betaeff, kt, sidata.meff) : 0.0;
+  dampedForce(sidata, P, vn, gamman, gammat, kn, kt, limitForce, nktv2p, x, i_forces, j_forces);
 }
 
 }

@@ -83,8 +83,6 @@ public:
 
   void postSettings(IContactHistorySetup *, ContactModelBase *c)
   {
-    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12))
-      error->all(FLERR, "Normal model gw_rough: maxRadiusFactor must be in (1, 1e12]");
     if (atom->superquadric_flag && !gwElliptic)
       error->all(FLERR, "Normal model gw_rough: superquadric particles need the elliptic closed form: "
                  "add 'gwElliptic on' (the Feng law is for spheres)");
@@ -139,12 +137,7 @@ public:
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (sidata.is_wall) {
-        delta = -sidata.deltan;
-        vn = SuperquadricGap::contactNormalVelocity(atom, sidata);
-      } else if (!gap.pairOverlap(lmp, sidata, 3.0 * sigma, delta, vn)) {
-        return;
-      }
+      if (!gap.closeOverlap(lmp, sidata, 3.0 * sigma, delta, vn)) return;
     } else
 #endif
     delta = closeSphereContact(scdata, vn);

@@ -60,8 +60,6 @@ public:
 
   void postSettings(IContactHistorySetup *, ContactModelBase *c)
   {
-    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12))
-      error->all(FLERR, "Normal model hertz_elliptic: maxRadiusFactor must be in (1, 1e12]");
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     curvature.setup(lmp, c, maxRadiusFactor, "hertz_elliptic");
 #else
@@ -76,8 +74,7 @@ public:
     registry.connect("Yeff", Yeff, "model hertz_elliptic");
     registry.connect("Geff", Geff, "model hertz_elliptic");
     if (viscoelastic) {
-      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, "model hertz_elliptic");
-      registry.connect("viscoelasticTime", viscoelasticTime, "model hertz_elliptic");
+      connectViscoelasticTime(registry, "model hertz_elliptic", viscoelasticTime);
     } else {
       registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model hertz_elliptic");
       registry.connect("betaeff", betaeff, "model hertz_elliptic");
@@ -153,11 +150,6 @@ private:
     r_area = g.R_area;
   }
 #endif
-
-  static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
-  }
 
   double **Yeff;
   double **Geff;

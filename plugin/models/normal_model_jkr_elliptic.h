@@ -82,8 +82,6 @@ public:
 
   void postSettings(IContactHistorySetup *, ContactModelBase *c)
   {
-    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12))
-      error->all(FLERR, "Normal model jkr_elliptic: maxRadiusFactor must be in (1, 1e12]");
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     curvature.setup(lmp, c, maxRadiusFactor, "jkr_elliptic");
     gap.setup(lmp, c);
@@ -98,10 +96,7 @@ public:
     connectElasticProperties(registry, caller, Yeff, Geff, betaeff);
     registry.registerProperty("workOfAdhesion", &createWork, caller);
     registry.connect("workOfAdhesion", work, caller);
-    if (viscoelastic) {
-      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller);
-      registry.connect("viscoelasticTime", viscoelasticTime, caller);
-    }
+    if (viscoelastic) connectViscoelasticTime(registry, caller, viscoelasticTime);
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -128,10 +123,7 @@ public:
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (sidata.is_wall) {
-        delta = -sidata.deltan;
-        vn = SuperquadricGap::contactNormalVelocity(atom, sidata);
-      } else if (!gap.pairOverlap(lmp, sidata, sidata.radsum, delta, vn)) {
+      if (!gap.closeOverlap(lmp, sidata, sidata.radsum, delta, vn)) {
         release(scdata);
         return;
       }
@@ -236,13 +228,8 @@ private:
     if (viscoelastic) {
       /* F_dis = A (d delta/dt) k_punch, d delta/dt = -vn (dc/dissipation_adhesive.h) */
       const double A = viscoelasticTime[itype][jtype];
-      const double Fn = -A * Sn * vn + P / force->nktv2p;
-      sidata.Fn = Fn;
-      sidata.kn = kn / force->nktv2p;
-      sidata.kt = kt / force->nktv2p;
-      sidata.gamman = A * Sn;
-      sidata.gammat = tangential_damping ? A * kt : 0.0;
-      applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
+      dampedForce(sidata, P, vn, A * Sn, tangential_damping ? A * kt : 0.0, kn, kt, false,
+                  force->nktv2p, atom->x, i_forces, j_forces);
     } else {
       dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
                         false, force->nktv2p, atom->x, i_forces, j_forces);
@@ -253,10 +240,6 @@ private:
   static MatrixProperty *createWork(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "workOfAdhesion", caller, sanity_checks, 0.0);
-  }
-  static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
   }
 
   double **Yeff, **Geff, **betaeff, **work, **viscoelasticTime;

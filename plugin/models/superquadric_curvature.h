@@ -24,9 +24,15 @@ class SuperquadricCurvature {
 public:
   SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0) {}
 
-  /* Call from postSettings. `model` names the normal model in messages. */
+  /* Call from postSettings. `model` names the normal model in messages.
+     Checks the maxRadiusFactor setting's range on every run. */
   void setup(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb, double max_radius_factor, const char *model)
   {
+    if (!(max_radius_factor > 1.0 && max_radius_factor <= 1e12)) {
+      char msg[128];
+      snprintf(msg, sizeof msg, "Normal model %s: maxRadiusFactor must be in (1, 1e12]", model);
+      lmp->error->all(FLERR, msg);
+    }
     if (!lmp->atom->superquadric_flag) return;
     alpha_i_offset_ = cmb->get_history_offset("alpha1_offset");
     alpha_j_offset_ = cmb->get_history_offset("alpha2_offset");

@@ -7,9 +7,9 @@
    line through it along the normal en = (grad f_j - grad f_i)/|...|
    (extended_overlap_algorithm). The overlap (p_j - p_i).en is then one
    function through touch: LIGGGHTS' deltan when touching, minus the gap
-   when apart. Walls need nothing here: LIGGGHTS' superquadric wall code
-   hands surfacesClose the support-point gap as sidata.deltan > 0 (the sign
-   is opposite to that of spheres).
+   when apart. Walls: LIGGGHTS' superquadric wall code hands surfacesClose
+   the support-point gap as sidata.deltan > 0 (the sign opposite to that of
+   spheres); closeOverlap turns it into the overlap.
    Contact points are warm-started from the previous step; pairs whose
    bounding boxes, grown by the range, are apart cost one box test. Only
    data plumbing here: the physics is in c_core. */
@@ -52,6 +52,19 @@ public:
     seen_offset_ = cp_offset_ - 1;
   }
 
+  /* For a superquadric contact handed to surfacesClose, wall or pair: the
+     overlap delta (< 0 apart) and normal velocity vn; false when a pair's
+     surfaces are farther apart than `range` (walls: always true). */
+  bool closeOverlap(LAMMPS_NS::LAMMPS *lmp, SurfacesIntersectData &sidata, double range,
+                    double &delta, double &vn)
+  {
+    if (!sidata.is_wall) return pairOverlap(lmp, sidata, range, delta, vn);
+    delta = -sidata.deltan;   /* the wall code passes the gap as deltan > 0 */
+    vn = contactNormalVelocity(lmp->atom, sidata);
+    return true;
+  }
+
+private:
   /* For a pair handed to surfacesClose: if the surfaces are within `range`
      of touching, fills sidata.en, contact_point, meff, the overlap delta
      (< 0 apart) and the normal velocity vn at the contact point, and
@@ -141,7 +154,6 @@ public:
     return LAMMPS_NS::vectorDot3D(v, sidata.en);
   }
 
-private:
   enum { SURFACES_FAR, SURFACES_CLOSE }; /* surface_model_superquadric.h's states */
   int cp_offset_, seen_offset_, alpha_i_offset_, alpha_j_offset_, warm_offset_;
 };
