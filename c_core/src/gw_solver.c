@@ -15,7 +15,7 @@
 
 dc_gw_solve_opts dc_gw_solve_default_opts(void)
 {
-  dc_gw_solve_opts o = {1.0, DC_GW_FORCE_FULL, DC_GW_F32_EXACT, 1e-12, 50};
+  dc_gw_solve_opts o = {1.0, 0.0, DC_GW_FORCE_FULL, DC_GW_F32_EXACT, 1e-12, 50};
   return o;
 }
 
@@ -125,19 +125,18 @@ int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_o
                 dc_gw_solve_result *r)
 {
   if (!(ap >= -10.0 && ap <= 1e4 && mu > 0.0 && mu <= 1e3 && o->domain_scale > 0.0 &&
-        o->max_iter > 0))
+        o->abar >= 0.0 && o->abar < 1e3 && o->max_iter > 0))
     return DC_EDOM;
   const int m = S->m;
   /* Eq. 60 in r* units: a = sqrt(R delta) -> sqrt(alpha'/2); sqrt(R sigma) -> 1/sqrt 2 */
   double abar;
   if (ap >= 1.0) abar = (1.75 + 1.0 / ap) * sqrt(0.5 * ap);
   else abar = (1.75 + fmin(fabs(ap), ap != 0.0 ? fabs(1.0 / ap) : INFINITY)) * sqrt(0.5);
-  abar *= o->domain_scale;
-  double *buf = malloc(((size_t)m * m + 6 * (size_t)m) * sizeof *buf);
+  abar = o->abar > 0.0 ? o->abar : abar * o->domain_scale;
+  const size_t mm = (size_t)m * m;
+  double *buf = malloc((2 * mm + 5 * (size_t)m) * sizeof *buf);
   if (!buf) return DC_ERANGE;
-  double *A = buf, *J = buf + m, *p = J + (size_t)m * m, *w = p + m, *rhs = w + m, *rr = rhs + m, *F12 = rr + m;
-  A = malloc((size_t)m * m * sizeof *A);
-  if (!A) { free(buf); return DC_ERANGE; }
+  double *A = buf, *J = A + mm, *p = J + mm, *w = p + m, *rhs = w + m, *rr = rhs + m, *F12 = rr + m;
   /* A_ij = (2/pi) abar s_j alpha_ij: w*_i = sum_j A_ij p*_j (Eqs. 28, 47) */
   for (int i = 0; i < m; i++) {
     rr[i] = abar * S->x[i];
@@ -196,7 +195,6 @@ int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_o
   r->Pstar_delta = ap > 0.0 ? r->Pstar_sigma / (ap * sqrt(ap)) : 0.0;
   r->abar = abar;
   r->p0 = p[0];
-  free(A);
   free(buf);
   return st;
 }

@@ -16,37 +16,59 @@ static const double t3[6][3] = {
 static void table3(void)
 {
   const double alpha[3] = {0.1, 1.0, 5.0};
-  printf("Feng Table 3 (mu = 4), P*(alpha) = P/P_h(delta); domain 1.5 x Eq. 60, F_3/2 by 10 Gauss points on [h, 5]\n");
+  /* the paper's choices (dc/gw_solver.h): abar = (1.5 + alpha) (R delta)^1/2
+     (in r* units x (alpha'/2)^1/2), force by Eq. 54, F_3/2 by 10 Gauss points */
+  printf("Feng Table 3 (mu = 4), P*(alpha) = P/P_h(delta); abar = (1.5 + alpha) a, Eq. 54, F_3/2 by 10 Gauss points\n");
+  double worst = 0.0;
   for (int k = 0; k < 6; k++) {
     dc_gw_solver S;
     CHECK(dc_gw_solver_init(&S, t3_m[k]) == DC_OK);
     printf("  m = %3d:", t3_m[k]);
     for (int a = 0; a < 3; a++) {
       dc_gw_solve_opts o = dc_gw_solve_default_opts();
-      o.domain_scale = 1.5;
+      o.abar = (1.5 + alpha[a]) * sqrt(0.5 / alpha[a]);
+      o.force_mode = DC_GW_FORCE_DOMAIN;
       o.f32_mode = DC_GW_F32_GAUSS10;
       dc_gw_solve_result r;
       CHECK(dc_gw_solve(&S, 1.0 / alpha[a], 4.0, &o, &r) == DC_OK);
-      printf("  %.7f (paper %.7f, %+.3f%%)", r.Pstar_delta, t3[k][a], 100 * (r.Pstar_delta / t3[k][a] - 1));
-      /* m >= 20: within 0.2% of the printed value (m = 5, 10 depend on the
-         paper's unstated domain choices and are reported only) */
-      if (t3_m[k] >= 20) CHECK_REL(r.Pstar_delta, t3[k][a], 2e-3, "Feng Table 3");
+      printf("  %.7f (paper %.7f, %+.5f%%)", r.Pstar_delta, t3[k][a], 100 * (r.Pstar_delta / t3[k][a] - 1));
+      worst = fmax(worst, fabs(r.Pstar_delta / t3[k][a] - 1));
+      /* the issue asks for 0.2%; the identified choices give < 1e-5 */
+      CHECK_REL(r.Pstar_delta, t3[k][a], 1e-5, "Feng Table 3");
     }
     printf("\n");
     dc_gw_solver_free(&S);
   }
-  /* the domain-converged value at m = 200 agrees with the paper's m = 200
-     value to 1e-6 for alpha = 0.1 and 5 (alpha = 1: 0.11% high, see report) */
+  printf("  worst relative difference from the printed table: %.1e\n", worst);
+
+  /* domain-converged values (m = 200, FORCE_FULL): independent of the
+     domain (1.5 and 2.5 x Eq. 60 agree), equal to the paper's m = 200
+     values at alpha = 0.1 and 5; at alpha = 1 above it by the pressure the
+     paper's domain (2.5 a) cuts from Eq. 54 */
   dc_gw_solver S;
   dc_gw_solver_init(&S, 200);
-  dc_gw_solve_opts o = dc_gw_solve_default_opts();
-  o.domain_scale = 1.5;
-  o.f32_mode = DC_GW_F32_GAUSS10;  /* the paper's quadrature of Eq. 17 */
-  dc_gw_solve_result r;
-  dc_gw_solve(&S, 10.0, 4.0, &o, &r);
-  CHECK_REL(r.Pstar_delta, 0.9769506, 1e-5, "alpha = 0.1, converged domain");
-  dc_gw_solve(&S, 0.2, 4.0, &o, &r);
-  CHECK_REL(r.Pstar_delta, 11.071807, 1e-5, "alpha = 5, converged domain");
+  printf("  domain-converged (m = 200, force over the whole plane):");
+  for (int a = 0; a < 3; a++) {
+    double P[2];
+    for (int d = 0; d < 2; d++) {
+      dc_gw_solve_opts o = dc_gw_solve_default_opts();
+      o.domain_scale = d ? 2.5 : 1.5;
+      o.f32_mode = DC_GW_F32_GAUSS10;
+      dc_gw_solve_result r;
+      CHECK(dc_gw_solve(&S, 1.0 / alpha[a], 4.0, &o, &r) == DC_OK);
+      P[d] = r.Pstar_delta;
+    }
+    CHECK_REL(P[1], P[0], 1e-6, "domain-converged");
+    dc_gw_solve_opts o = dc_gw_solve_default_opts();
+    o.abar = (1.5 + alpha[a]) * sqrt(0.5 / alpha[a]);
+    o.f32_mode = DC_GW_F32_GAUSS10;
+    dc_gw_solve_result r;   /* the paper's domain, force over the whole plane */
+    CHECK(dc_gw_solve(&S, 1.0 / alpha[a], 4.0, &o, &r) == DC_OK);
+    printf("  alpha = %g: %.7f (paper %+.4f%%; paper's domain with the outer force %+.4f%%)", alpha[a],
+           P[0], 100 * (P[0] / t3[5][a] - 1), 100 * (r.Pstar_delta / t3[5][a] - 1));
+    if (a != 1) CHECK_REL(P[0], t3[5][a], 2e-6, "converged = paper at alpha = 0.1, 5");
+  }
+  printf("\n");
   dc_gw_solver_free(&S);
 }
 

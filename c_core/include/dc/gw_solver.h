@@ -37,6 +37,17 @@
    the same points (Eq. 54); DC_GW_FORCE_FULL adds the pressure beyond abar
    (w there from the same influence integral, 48 Gauss points out to where
    r*^2 - alpha' = 14), the paper's Sec. 5.2.1 reading of Eq. 21.
+
+   Feng Table 3 was not computed with the printed Eq. 60. All 18 printed
+   values (m = 5 ... 200, alpha = 0.1, 1, 5) are reproduced within 6e-6 by
+   abar = (1.5 + alpha) (R delta)^1/2, the force by Eq. 54 alone (FORCE_DOMAIN)
+   and F_3/2 by GAUSS10; found by scanning abar for each alpha (the m = 5
+   and m = 10 values pin it to 0.1%: 3.578, 1.768, 2.055 in r* units, i.e.
+   1.600, 2.500, 6.500 (R delta)^1/2). At alpha = 1 that domain is too small:
+   Eq. 54 leaves out the 0.153% of the force beyond abar, and the pressure
+   inside comes out 0.041% high (w misses the outer load), so the paper's
+   alpha = 1 column lies 0.112% below the domain-converged value; at
+   alpha = 0.1 and 5 both effects are below 1e-6 (test_gw_solver.c).
    This is the reference, not the hot path: it allocates. */
 #ifndef DC_GW_SOLVER_H
 #define DC_GW_SOLVER_H
@@ -58,7 +69,8 @@ typedef struct {
 } dc_gw_solver;
 
 typedef struct {
-  double domain_scale;  /* abar = domain_scale x Eq. 60 (1 = the paper's) */
+  double domain_scale;  /* abar = domain_scale x Eq. 60 (1 = as printed) */
+  double abar;          /* > 0: the domain radius in r* units instead */
   int force_mode;       /* DC_GW_FORCE_* */
   int f32_mode;         /* DC_GW_F32_* */
   double tol;           /* stop when ||dp||/||p|| < tol (Eq. 59) */
@@ -74,7 +86,7 @@ typedef struct {
   double hist[DC_GW_SOLVER_MAX_HIST];  /* ||dp||/||p|| per iteration (Eq. 59) */
 } dc_gw_solve_result;
 
-/* Default options: domain_scale 1, FORCE_FULL, F32_EXACT, tol 1e-12, 50
+/* Default options: domain_scale 1, abar 0, FORCE_FULL, F32_EXACT, tol 1e-12, 50
    (the rounding floor of ||dp||/||p|| is ~1e-14 at m = 100). */
 dc_gw_solve_opts dc_gw_solve_default_opts(void);
 
