@@ -36,13 +36,6 @@ static double poly(const double *c, int n, double x)
   return s;
 }
 
-static double dpoly(const double *c, int n, double x)
-{
-  double s = (n - 1) * c[n - 1];
-  for (int k = n - 2; k >= 1; k--) s = fma(s, x, k * c[k]);
-  return s;
-}
-
 /* monomial coefficients of the interpolant through (x_k, y_k), k < n <= 5 */
 static void interp_coeffs(const double *x, const double *y, int n, double *c)
 {
@@ -153,6 +146,19 @@ int dc_feng_init(double mu, int variant, dc_feng_law *law)
   if (variant == DC_FENG_TABLE) table_variant(mu, law);
   else fitted_variant(mu, law);
   law->p3m3 = poly(law->b3, 5, -3.0);
+  memcpy(law->c3, law->b3, sizeof law->c3);
+  law->c3[4] -= law->p3m3 / 81.0;           /* (alpha'/-3)^4 = alpha'^4 / 81 */
+  return DC_OK;
+}
+
+int dc_feng_pair_init(const dc_feng_law *law, double Estar, double sigma, dc_feng_pair *p)
+{
+  if (!(Estar > 0 && isfinite(Estar) && sigma > 0 && isfinite(sigma))) return DC_EDOM;
+  p->law = *law;
+  p->c = 4.0 / 3.0 * Estar;
+  p->sigma = sigma;
+  p->inv_sigma = 1.0 / sigma;
+  p->c_sigma = p->c * sigma * sqrt(sigma);
   return DC_OK;
 }
 
@@ -161,22 +167,18 @@ double dc_feng_P1(const dc_feng_law *law, double alpha)
   return poly(law->b1, 4, alpha);
 }
 
-/* P3* with the alpha' = -3 taper and floor; derivative in *d */
-static double p3(const dc_feng_law *law, double ap, double *d)
+/* P3* with the alpha' = -3 taper, floored at 0 */
+static double p3(const dc_feng_law *law, double ap)
 {
-  const double q = ap / -3.0, q2 = q * q;
-  double v = poly(law->b3, 5, ap) - law->p3m3 * q2 * q2;
-  *d = dpoly(law->b3, 5, ap) + law->p3m3 * 4.0 / 3.0 * q2 * q;
-  if (v < 0.0) { v = 0.0; *d = 0.0; }
-  return v;
+  const double v = poly(law->c3, 5, ap);
+  return v > 0.0 ? v : 0.0;
 }
 
 double dc_feng_pstar_sigma(const dc_feng_law *law, double ap)
 {
-  double d;
   if (ap >= 1.0) return poly(law->b1, 4, 1.0 / ap) * ap * sqrt(ap);
   if (ap > 0.0) return poly(law->b2, 3, ap);
-  if (ap > -3.0) return p3(law, ap, &d);
+  if (ap > -3.0) return p3(law, ap);
   return 0.0;
 }
 
@@ -186,24 +188,14 @@ int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
   if (!(Estar > 0 && isfinite(Estar) && R > 0 && isfinite(R) && sigma >= 0 &&
         isfinite(sigma) && isfinite(delta)))
     return DC_EDOM;
-  const double c = 4.0 / 3.0 * Estar * sqrt(R);
-  if (delta >= sigma) {                       /* Case I (and sigma = 0: Hertz) */
-    const double sd = sqrt(delta), Ph = c * delta * sd, a = sigma / delta;
-    const double P1 = poly(law->b1, 4, a);
-    *P = Ph * P1;
-    *kn = 1.5 * c * sd * P1 - Ph * dpoly(law->b1, 4, a) * a / delta;
+  if (sigma == 0.0) {                         /* Hertz */
+    const double c = 4.0 / 3.0 * Estar * sqrt(R), sd = delta > 0.0 ? sqrt(delta) : 0.0;
+    *P = c * fmax(delta, 0.0) * sd;
+    *kn = 1.5 * c * sd;
     return DC_OK;
   }
-  const double Phs = c * sigma * sqrt(sigma), ap = delta / sigma;
-  double d = 0.0;
-  if (ap > 0.0) {                             /* Case II */
-    *P = Phs * poly(law->b2, 3, ap);
-    d = dpoly(law->b2, 3, ap);
-  } else if (ap > -3.0) {                     /* Case III */
-    *P = Phs * p3(law, ap, &d);
-  } else {                                    /* Case IV */
-    *P = 0.0;
-  }
-  *kn = Phs * d / sigma;
+  dc_feng_pair p;
+  dc_feng_pair_init(law, Estar, sigma, &p);
+  dc_feng_pair_force(&p, sqrt(R), delta, P, kn);
   return DC_OK;
 }

@@ -108,15 +108,19 @@ public:
     }
     registry.registerProperty("roughnessMu", &createMu, caller);
     registry.connect("roughnessMu", mu, caller);
-    laws.assign((ntypes + 1) * (ntypes + 1), dc_feng_law());
+    laws.assign((ntypes + 1) * (ntypes + 1), dc_feng_pair());
     for (int i = 1; i <= ntypes; i++)
-      for (int j = 1; j <= ntypes; j++)
-        if (dc_feng_init(mu[i][j], fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, &laws[i * (ntypes + 1) + j]) != DC_OK) {
+      for (int j = 1; j <= ntypes; j++) {
+        dc_feng_law law;
+        if (dc_feng_init(mu[i][j], fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, &law) != DC_OK) {
           char msg[256];
           snprintf(msg, sizeof msg, "Normal model gw_rough: roughnessMu = %g for types %d and %d is outside [%g, %g]",
                    mu[i][j], i, j, DC_FENG_MU_MIN, DC_FENG_MU_MAX);
           error->all(FLERR, msg);
         }
+        /* sigma = 0 pairs take the Hertz branch and never read theirs */
+        if (roughness[i][j] > 0.0) dc_feng_pair_init(&law, Yeff[i][j], roughness[i][j], &laws[i * (ntypes + 1) + j]);
+      }
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -140,7 +144,12 @@ public:
       if (!gap.closeOverlap(lmp, sidata, 3.0 * sigma, delta, vn)) return;
     } else
 #endif
-    delta = closeSphereContact(scdata, vn);
+    {
+      /* most pairs inside the contact distance are farther apart than 3 sigma */
+      const double reach = sidata.radsum + 3.0 * sigma;
+      if (!sidata.is_wall && sidata.rsq >= reach * reach) return;
+      delta = closeSphereContact(scdata, vn);
+    }
     if (delta <= -3.0 * sigma) return;
     sidata.has_force_update = true;
     roughForce(sidata, delta, vn, i_forces, j_forces);
@@ -159,7 +168,7 @@ private:
     const double sigma = roughness[itype][jtype];
     const double Y = Yeff[itype][jtype];
     const double reach = sidata.is_wall ? sidata.radi : sidata.radsum;
-    if (neighbor->contactDistanceFactor < 1.0 + 3.0 * sigma / reach) {
+    if (neighbor->contactDistanceFactor * reach < reach + 3.0 * sigma) {
       char msg[256];
       snprintf(msg, sizeof msg, "Normal model gw_rough: rough contacts begin 3 sigma = %g before touch: "
                "set neigh_modify contact_distance_factor >= %.6g", 3.0 * sigma, 1.0 + 3.0 * sigma / reach);
@@ -182,19 +191,18 @@ private:
       hertzStiffness(Y, Geff[itype][jtype], g.R_force, g.R_area, delta, kn, Sn, kt);
       P = kn * delta;
     } else {
-      int st;
       if (gwElliptic) {
         dc_gw_rough_state s;
-        st = dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+        const int st = dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+        if (st != DC_OK) {
+          char msg[256];
+          snprintf(msg, sizeof msg, "Normal model gw_rough: overlap %g, roughness %g, radius %g: %s", delta, sigma, reff, dc_status_str(st));
+          error->one(FLERR, msg);
+        }
         P = s.F;
         Sn = s.kn;
       } else {
-        st = dc_feng_force(&laws[itype * (ntypes + 1) + jtype], Y, reff, sigma, delta, &P, &Sn);
-      }
-      if (st != DC_OK) {
-        char msg[256];
-        snprintf(msg, sizeof msg, "Normal model gw_rough: overlap %g, roughness %g, radius %g: %s", delta, sigma, reff, dc_status_str(st));
-        error->one(FLERR, msg);
+        dc_feng_pair_force(&laws[itype * (ntypes + 1) + jtype], sqrt(reff), delta, &P, &Sn);
       }
       kn = delta > 0.0 ? P / delta : 0.0;
       if (delta > 0.0) kt = 8. * Geff[itype][jtype] * sqrt(g.R_area * delta);
@@ -245,7 +253,7 @@ private:
   bool tangential_damping, limitForce, gwElliptic, fengFitted;
   double maxRadiusFactor;
   int ntypes;
-  std::vector<dc_feng_law> laws;
+  std::vector<dc_feng_pair> laws;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
   SuperquadricGap gap;

@@ -39,10 +39,13 @@
    and 73 are printed in alpha; they are polynomials in alpha'.
 
    The paper notes P* < 1 near alpha = 0 (a defect of the GW model, kept by
-   the law: P1* interpolates the solver there). Hot path: dc_feng_force
-   after dc_feng_init; no allocation. */
+   the law: P1* interpolates the solver there). Hot path: dc_feng_pair_force
+   (inline, no checks) on a dc_feng_pair set up once per material pair;
+   dc_feng_force is the checked form of the same kernel. */
 #ifndef DC_FENG_ROUGH_H
 #define DC_FENG_ROUGH_H
+
+#include <math.h>
 
 #ifdef __cplusplus
 extern "C" {
@@ -59,7 +62,16 @@ typedef struct {
   double b2[3];   /* Case II: P2*(alpha') = sum b2[k] alpha'^k */
   double b3[5];   /* Case III, before the alpha' = -3 taper     */
   double p3m3;    /* P3*(-3), removed by the taper              */
+  double c3[5];   /* Case III as evaluated: b3 - p3m3 (alpha'/3)^4 */
 } dc_feng_law;
+
+/* The law bound to one material pair (E*, sigma > 0). */
+typedef struct {
+  dc_feng_law law;
+  double c;         /* 4/3 E*: P_h(x) = c R^1/2 x^3/2 */
+  double sigma, inv_sigma;
+  double c_sigma;   /* c sigma^3/2 */
+} dc_feng_pair;
 
 /* Coefficients for one mu in [1, 50] (once per material pair). */
 int dc_feng_init(double mu, int variant, dc_feng_law *law);
@@ -75,6 +87,42 @@ double dc_feng_pstar_sigma(const dc_feng_law *law, double alpha_p);
    sigma >= 0, E* > 0, R > 0 (Eq. 75). sigma = 0 is Hertz. */
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
                   double delta, double *P, double *kn);
+
+/* Binds law to E* > 0 and sigma > 0 (DC_EDOM otherwise). */
+int dc_feng_pair_init(const dc_feng_law *law, double Estar, double sigma, dc_feng_pair *p);
+
+/* Eq. 75: force P and dP/d delta at overlap delta (any sign) for
+   sqrtR = R^1/2 > 0. Cases I-IV as above, P3* floored at 0. */
+static inline void dc_feng_pair_force(const dc_feng_pair *p, double sqrtR, double delta,
+                                      double *P, double *kn)
+{
+  const double *b;
+  if (delta >= p->sigma) {                    /* Case I, x = alpha = sigma/delta */
+    b = p->law.b1;
+    const double rd = 1.0 / delta, x = p->sigma * rd, sd = sqrt(delta), c = p->c * sqrtR;
+    const double P1 = ((b[3] * x + b[2]) * x + b[1]) * x + b[0];
+    const double d1 = (3.0 * b[3] * x + 2.0 * b[2]) * x + b[1];
+    *P = c * delta * sd * P1;
+    *kn = c * sd * (1.5 * P1 - d1 * x);
+    return;
+  }
+  const double x = delta * p->inv_sigma, c = p->c_sigma * sqrtR;
+  double v, d;
+  if (x > 0.0) {                              /* Case II */
+    b = p->law.b2;
+    v = (b[2] * x + b[1]) * x + b[0];
+    d = 2.0 * b[2] * x + b[1];
+  } else if (x > -3.0) {                      /* Case III */
+    b = p->law.c3;
+    v = (((b[4] * x + b[3]) * x + b[2]) * x + b[1]) * x + b[0];
+    d = ((4.0 * b[4] * x + 3.0 * b[3]) * x + 2.0 * b[2]) * x + b[1];
+    if (v < 0.0) v = d = 0.0;
+  } else {                                    /* Case IV */
+    v = d = 0.0;
+  }
+  *P = c * v;
+  *kn = c * d * p->inv_sigma;
+}
 
 /* The published tables (Tables 4-6), for tests: mu nodes and coefficients. */
 extern const double dc_feng_mu_nodes[7];
