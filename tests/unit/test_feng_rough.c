@@ -66,6 +66,26 @@ int main(void)
   CHECK(dc_feng_force(&L, 1e9, 1e-3, 0.0, 1e-6, &p, &kn) == DC_OK);
   CHECK_REL(p, 4.0 / 3 * 1e9 * sqrt(1e-3) * pow(1e-6, 1.5), 1e-15, "sigma = 0: Hertz");
   CHECK(dc_feng_force(&L, 1e9, 1e-3, sigma, -3.5 * sigma, &p, &kn) == DC_OK && p == 0.0);
+  CHECK(dc_feng_force(&L, 1e9, 1e-3, 0.0, -1e-6, &p, &kn) == DC_OK && p == 0.0 && kn == 0.0);
+  /* Case III as evaluated: Table 6's quartic minus the taper P3*(-3) (alpha'/3)^4 */
+  for (double ap = -2.9; ap < 0.0; ap += 0.3) {
+    double q = 0.0;
+    for (int k = 4; k >= 0; k--) q = q * ap + L.b3[k];
+    q -= L.p3m3 * pow(ap / 3.0, 4);
+    dc_feng_force(&L, 1e9, 1e-3, sigma, ap * sigma, &p, &kn);
+    CHECK_ABS(p / (4.0 / 3 * 1e9 * sqrt(1e-3) * pow(sigma, 1.5)), fmax(q, 0.0), 1e-14, "Case III with taper");
+  }
+  /* the bound pair (plugin hot path) is the same kernel */
+  dc_feng_pair pr;
+  CHECK(dc_feng_pair_init(&L, 1e9, sigma, &pr) == DC_OK);
+  CHECK(dc_feng_pair_init(&L, 1e9, 0.0, &pr) == DC_EDOM);
+  dc_feng_pair_init(&L, 1e9, sigma, &pr);
+  for (int k = 0; k < 4; k++) {
+    double p2, k2;
+    dc_feng_force(&L, 1e9, 1e-3, sigma, ds[k], &p, &kn);
+    dc_feng_pair_force(&pr, sqrt(1e-3), ds[k], &p2, &k2);
+    CHECK(p == p2 && kn == k2);
+  }
   /* domain */
   CHECK(dc_feng_init(0.99, DC_FENG_TABLE, &L) == DC_EDOM);
   CHECK(dc_feng_init(50.01, DC_FENG_FITTED, &L) == DC_EDOM);
