@@ -171,7 +171,7 @@ private:
     if (neighbor->contactDistanceFactor * reach < reach + 3.0 * sigma) {
       char msg[256];
       snprintf(msg, sizeof msg, "Normal model gw_rough: rough contacts begin 3 sigma = %g before touch: "
-               "set neigh_modify contact_distance_factor >= %.6g", 3.0 * sigma, 1.0 + 3.0 * sigma / reach);
+               "set neigh_modify contact_distance_factor >= %.12g", 3.0 * sigma, 1.0 + 3.0 * sigma / reach);
       error->one(FLERR, msg);
     }
     /* the smooth contact's geometry; spheres: circular with Rc = reff */
