@@ -61,17 +61,17 @@ static double finite_kn(double num, double den)
 
 static void sphere_fill(double R, double Estar, double w, double a, dc_jkr_state *s)
 {
-  const double a3 = a * a * a;
-  const double adh = sqrt(8.0 * M_PI * w * Estar * a3);
+  /* q = (2 pi w a/E*)^1/2: F = 4 E* a^3/(3R) - 2 E* a q, delta = a^2/R - q */
+  const double q = sqrt(2.0 * M_PI * w * a / Estar);
   s->contact = 1;
   s->a = s->b = a;
   s->area = M_PI * a * a;
   s->e2 = 0.0;
-  s->F = 4.0 * Estar * a3 / (3.0 * R) - adh;
-  s->delta = a * a / R - sqrt(2.0 * M_PI * w * a / Estar);
-  /* dF/da = 4 E a^2/R - 3/2 adh/a, d delta/da = 2a/R - 1/2 (2 pi w/(E a))^1/2 */
-  const double num = 4.0 * Estar * a * a / R - 1.5 * adh / a;
-  const double den = 2.0 * a / R - 0.5 * sqrt(2.0 * M_PI * w / (Estar * a));
+  s->F = 4.0 * Estar * a * a * a / (3.0 * R) - 2.0 * Estar * a * q;
+  s->delta = a * a / R - q;
+  /* dF/da = 4 E* a^2/R - 3 E* q, d delta/da = 2a/R - q/(2a) */
+  const double num = 4.0 * Estar * a * a / R - 3.0 * Estar * q;
+  const double den = 2.0 * a / R - 0.5 * q / a;
   s->kn = finite_kn(num, den);
 }
 
@@ -105,17 +105,18 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   const double As = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), R * R);
   const double Ds = As * As / (2.0 * R);
   if (!(Ds > 0.0) || delta > 1e10 * Ds) {
-    /* Hertz-dominated (or w = 0): a^2 = R (delta + (2 pi w a/E*)^1/2) by
-       fixed point; the contraction factor is ~dbar^-3/4 <= 3e-8, so three
-       steps from the Hertz radius reach rounding. */
+    /* Hertz-dominated (or w = 0): a^2 = R (delta + (2 pi w a/E*)^1/2).
+       With a0 = (R delta)^1/2 and t0 = (2 pi w a0/E*)^1/2/delta ~ dbar^-3/4
+       <= 3e-8, a = a0 (1 + t0/2) + O(t0^3): the t0^2 terms of the square
+       root and of t(a) = t0 (a/a0)^1/2 cancel. */
     if (delta < 0.0) { zero_state(delta, s); return DC_OK; }
     if (delta == 0.0) {
       zero_state(delta, s);
       if (w == 0.0) s->contact = 1;
       return DC_OK;
     }
-    double a = sqrt(R * delta);
-    for (int i = 0; i < 3 && w > 0.0; i++) a = sqrt(R * (delta + sqrt(2.0 * M_PI * w * a / Estar)));
+    const double a0 = sqrt(R * delta);
+    const double a = a0 + 0.5 * a0 * sqrt(2.0 * M_PI * w * a0 / Estar) / delta;
     sphere_fill(R, Estar, w, a, s);
     s->delta = delta;
     return DC_OK;

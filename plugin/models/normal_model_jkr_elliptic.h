@@ -197,22 +197,21 @@ private:
       P = kn * delta;
     } else {
       dc_jkr_state s;
-      double delta_break;
       int st;
       if (!sq) {
-        delta_break = dc_jkr_sphere_delta_break(R_major, Y, w);
+        /* separation (contact = 0) is decided inside, with the same delta_break */
         st = dc_jkr_sphere(R_major, Y, w, delta, &s);
+        if (forming) checkReach(sidata, dc_jkr_sphere_delta_break(R_major, Y, w));
       } else {
         dc_jkr_geom g;
         st = dc_jkr_geometry(R_major, R_minor, Y, w, &g);
         if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, st);
-        delta_break = g.delta_break;
+        if (forming) checkReach(sidata, g.delta_break);
         dc_jkr_hint *hint = reinterpret_cast<dc_jkr_hint *>(&sidata.contact_history[hint_offset]);
         st = dc_jkr_contact(&g, delta, hint, &s);
       }
-      if (forming) checkReach(sidata, delta_break);
-      if (delta < delta_break) return false;
       if (st != DC_OK) fail("contact state", delta, R_major, R_minor, w, st);
+      if (!s.contact) return false;
       P = s.F;
       /* flat-punch stiffness of the contact ellipse (circle: 2 E* a) */
       if (sq) {

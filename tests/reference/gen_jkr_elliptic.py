@@ -199,11 +199,13 @@ def main():
     # classical JKR: delta = a^2/R - sqrt(2 pi w a/E*), F = 4E* a^3/(3R) - sqrt(8 pi w E* a^3)
     rows = []
     R = mp.mpf(2e-3)
-    for w in [0.05, 1e-6]:
+    # w = 1e-12: overlaps on both sides of the solver's switch to the
+    # Hertz-dominated expansion (delta = 1e10 delta_scale, i.e. k ~ -5.8e9)
+    for w, ks in [(0.05, None), (1e-6, None), (1e-12, ['-1e9', '-1e11', '-1e13'])]:
         w = mp.mpf(w)
         ac = mp.cbrt(mp.pi * w * R * R / (8 * ESTAR))
         dc = ac * ac / R - mp.sqrt(2 * mp.pi * w * ac / ESTAR)
-        for k in ['0.999999', '0.5', '0', '-0.5', '-10', '-1000', '-1e6']:
+        for k in ks or ['0.999999', '0.5', '0', '-0.5', '-10', '-1000', '-1e6']:
             # delta = dc * k (k = 0.999999: just inside the separation point)
             delta = mp.mpf(float(dc * mp.mpf(k)))
             f = lambda a: a * a / R - mp.sqrt(2 * mp.pi * w * a / ESTAR) - delta

@@ -54,7 +54,7 @@ static void test_sphere_table(void)
     rows++;
   }
   fclose(f);
-  CHECK(rows == 14);
+  CHECK(rows == 17);
 }
 
 static void test_sphere_closed_forms(void)
