@@ -167,19 +167,13 @@ double dc_feng_P1(const dc_feng_law *law, double alpha)
   return poly(law->b1, 4, alpha);
 }
 
-/* P3* with the alpha' = -3 taper, floored at 0 */
-static double p3(const dc_feng_law *law, double ap)
-{
-  const double v = poly(law->c3, 5, ap);
-  return v > 0.0 ? v : 0.0;
-}
-
 double dc_feng_pstar_sigma(const dc_feng_law *law, double ap)
 {
-  if (ap >= 1.0) return poly(law->b1, 4, 1.0 / ap) * ap * sqrt(ap);
-  if (ap > 0.0) return poly(law->b2, 3, ap);
-  if (ap > -3.0) return p3(law, ap);
-  return 0.0;
+  /* the kernel in units sigma = 1, P_h(sigma) = 1 (c = 1, R = 1) */
+  const dc_feng_pair unit = {*law, 1.0, 1.0, 1.0, 1.0};
+  double P, kn;
+  dc_feng_pair_force(&unit, 1.0, ap, &P, &kn);
+  return P;
 }
 
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
