@@ -5,6 +5,7 @@
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
+#include "jkr_extrema_guess.h"
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -284,23 +285,29 @@ static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, double sv, jg_p
   p->dPbar = sv * grr * (Y * dln + dY);
 }
 
-/* Brent's zero finder (zeroin) on the v-derivative of dbar (which = 0) or
-   Pbar (which = 1) over [a, b] with a sign change (fa < 0 < fb given). */
-static double deriv_of(const dc_jkr_geom *G, double m, int which)
+/* The v-derivative of dbar (which = 0) or Pbar (which = 1) at v; the
+   point is kept in *p. */
+static double deriv_of(const dc_jkr_geom *G, double v, int which, jg_point *p)
 {
-  jg_point p;
-  jg_eval(G, m, &p);
-  return which ? p.dPbar : p.ddbar;
+  jg_eval(G, v, p);
+  return which ? p->dPbar : p->ddbar;
 }
 
+/* Brent's zero finder (zeroin) on that derivative over [a, b] with a sign
+   change (fa < 0 < fb given, *pa_in and *pb the points at a and b); the
+   root's point is returned in *pb. */
 static int brent_deriv(const dc_jkr_geom *G, int which, double a, double b, double fa, double fb,
-                       double *root)
+                       const jg_point *pa_in, jg_point *pb, double *root)
 {
   if (!(fa < 0.0 && fb > 0.0)) return DC_ENOCONV;
   double c = a, fc = fa, d = b - a, e = d;
+  jg_point pa = *pa_in, pc = pa;
   for (int it = 0; it < 200; it++) {
-    if ((fb > 0.0) == (fc > 0.0)) { c = a; fc = fa; d = e = b - a; }
-    if (fabs(fc) < fabs(fb)) { a = b; b = c; c = a; fa = fb; fb = fc; fc = fa; }
+    if ((fb > 0.0) == (fc > 0.0)) { c = a; fc = fa; pc = pa; d = e = b - a; }
+    if (fabs(fc) < fabs(fb)) {
+      a = b; b = c; c = a; fa = fb; fb = fc; fc = fa;
+      pa = *pb; *pb = pc; pc = pa;
+    }
     /* 1e-12 relative in v: the extremal values (delta_break, F_pull) are
        then exact to rounding (second order), e2_break and e2_pull to ~1e-12 */
     const double tol = 1e-12 * fabs(b) + 1e-300;
@@ -318,63 +325,35 @@ static int brent_deriv(const dc_jkr_geom *G, int which, double a, double b, doub
       if (2.0 * pp < fmin(3.0 * xm * q - fabs(tol * q), fabs(e * q))) { e = d; d = pp / q; }
       else { d = xm; e = d; }
     } else { d = xm; e = d; }
-    a = b; fa = fb;
+    a = b; fa = fb; pa = *pb;
     b += fabs(d) > tol ? d : (xm > 0.0 ? tol : -tol);
-    fb = deriv_of(G, b, which);
+    fb = deriv_of(G, b, which, pb);
   }
   *root = b;
   return DC_ENOCONV;
 }
 
-/* Starting brackets of the separation and pull-off searches: the two
-   extrema in the solver variable relative to the Hertz shape, ln(v/v_H)
-   (columns 0, 1 for v = e^2; 2, 3 for v = 1 - e^2), at R_minor/R_major =
-   10^(-i/4), i = 0..24 (i = 0: the circular limit 1/2 and 3/4). Values of
-   this code's own searches (full brackets, to rounding), to 6 digits; they
-   only place the brackets, the searches below find the extrema to
-   rounding, so their accuracy does not limit the results. Linear
-   interpolation in log10 of the ratio is within ~1% in v. */
-static const double jkr_ext_guess[25][4] = {
-  {-0.693147, -0.287682, 0.000000, 0.000000},
-  {-0.521214, -0.202808, 0.383844, 0.191822},
-  {-0.387295, -0.138958, 0.768298, 0.383279},
-  {-0.286529, -0.093109, 1.154537, 0.573966},
-  {-0.212599, -0.061366, 1.544538, 0.763367},
-  {-0.159216, -0.039961, 1.941027, 0.950799},
-  {-0.121010, -0.025786, 2.347367, 1.135414},
-  {-0.093802, -0.016517, 2.767518, 1.316281},
-  {-0.074515, -0.010511, 3.205983, 1.492483},
-  {-0.060945, -0.006649, 3.667525, 1.663215},
-  {-0.051526, -0.004181, 4.156451, 1.827842},
-  {-0.045130, -0.002613, 4.675365, 1.985923},
-  {-0.040917, -0.001624, 5.223857, 2.137207},
-  {-0.038239, -0.001004, 5.798096, 2.281605},
-  {-0.036594, -0.000617, 6.391923, 2.419160},
-  {-0.035613, -0.000378, 6.998785, 2.550007},
-  {-0.035041, -0.000230, 7.613217, 2.674346},
-  {-0.034712, -0.000139, 8.231361, 2.792413},
-  {-0.034524, -0.000084, 8.850779, 2.904465},
-  {-0.034417, -0.000050, 9.470059, 3.010762},
-  {-0.034357, -0.000030, 10.088444, 3.111560},
-  {-0.034323, -0.000018, 10.705562, 3.207110},
-  {-0.034304, -0.000011, 11.321264, 3.297651},
-  {-0.034293, -0.000006, 11.935520, 3.383412},
-  {-0.034287, -0.000004, 12.548362, 3.464612}};
-
-/* Bracket [lo, hi] around the interpolated guess of extremum `which`
-   (0: separation, 1: pull-off), half-width `hw` (relative), clipped to
-   [vmin, vmax]. */
+/* Bracket [lo, hi] around the guess of extremum `which` (0: separation,
+   1: pull-off), half-width `hw` (relative), clipped to [vmin, vmax]. The
+   guess: ln(v/v_H) from jkr_extrema_guess.h (the library's own searches at
+   16 ratios per decade) by 4-point Lagrange interpolation in log10 of the
+   ratio, within 4e-7 of the extremum; it only places the bracket, the
+   search finds the extremum to rounding. */
 static void ext_bracket(const dc_jkr_geom *G, int which, double hw, double vmin, double vmax,
                         double *lo, double *hi)
 {
-  double t = -4.0 * log10(G->lam2);
-  if (!(t > 0.0)) t = 0.0;
-  if (t > 24.0) t = 24.0;
-  int i = (int)t;
-  if (i > 23) i = 23;
-  const double f = t - i;
+  double u = -DC_JKR_GUESS_PER_DECADE * log10(G->lam2);
+  if (!(u > 0.0)) u = 0.0;
+  if (u > DC_JKR_GUESS_ROWS - 1) u = DC_JKR_GUESS_ROWS - 1;
+  int i = (int)u - 1;
+  if (i < 0) i = 0;
+  if (i > DC_JKR_GUESS_ROWS - 4) i = DC_JKR_GUESS_ROWS - 4;
+  const double f = u - i;   /* position in the stencil rows i .. i+3, in [0, 3] */
   const int col = (G->use_m1 ? 2 : 0) + which;
-  const double lg = (1.0 - f) * jkr_ext_guess[i][col] + f * jkr_ext_guess[i + 1][col];
+  const double y0 = dc_jkr_extrema_guess[i][col], y1 = dc_jkr_extrema_guess[i + 1][col];
+  const double y2 = dc_jkr_extrema_guess[i + 2][col], y3 = dc_jkr_extrema_guess[i + 3][col];
+  const double lg = -(f - 1) * (f - 2) * (f - 3) / 6 * y0 + f * (f - 2) * (f - 3) / 2 * y1 -
+                    f * (f - 1) * (f - 3) / 2 * y2 + f * (f - 1) * (f - 2) / 6 * y3;
   const double g = G->v_hertz * exp(lg);
   *lo = fmax(vmin, g * (1.0 - hw));
   *hi = fmin(vmax, g * (1.0 + hw));
@@ -383,18 +362,22 @@ static void ext_bracket(const dc_jkr_geom *G, int which, double hw, double vmin,
 /* Brent on the derivative `which` from a bracket around the tabulated
    guess, widened (x8) until the derivative changes sign, else over the
    full range [vmin, vmax]. */
-static int find_extremum(const dc_jkr_geom *G, int which, double vmin, double vmax, double *root)
+static int find_extremum(const dc_jkr_geom *G, int which, double vmin, double vmax, double *root,
+                         jg_point *p)
 {
-  for (double hw = 0.02; hw < 1.0; hw *= 8.0) {
+  jg_point plo;
+  for (double hw = 4e-6; hw < 1.0; hw *= 8.0) {
     double lo, hi;
     ext_bracket(G, which, hw, vmin, vmax, &lo, &hi);
     if (!(lo < hi)) continue;
-    const double flo = deriv_of(G, lo, which);
+    const double flo = deriv_of(G, lo, which, &plo);
     if (!(flo < 0.0)) continue;
-    const double fhi = deriv_of(G, hi, which);
-    if (fhi > 0.0) return brent_deriv(G, which, lo, hi, flo, fhi, root);
+    const double fhi = deriv_of(G, hi, which, p);
+    if (fhi > 0.0) return brent_deriv(G, which, lo, hi, flo, fhi, &plo, p, root);
   }
-  return brent_deriv(G, which, vmin, vmax, deriv_of(G, vmin, which), deriv_of(G, vmax, which), root);
+  const double flo = deriv_of(G, vmin, which, &plo);
+  const double fhi = deriv_of(G, vmax, which, p);
+  return brent_deriv(G, which, vmin, vmax, flo, fhi, &plo, p, root);
 }
 
 int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G)
@@ -475,19 +458,18 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   const double v0 = G->use_m1 ? 1.0 - 1e-6 * G->e2_hertz : 1e-6 * vH;  /* near e^2 = 0 */
   const double v1 = G->use_m1 ? vH * (1.0 + 1e-6) : vH * (1.0 - 1e-6);  /* near Hertz   */
   double vb, vp;
-  st = find_extremum(G, 0, fmin(v0, v1), fmax(v0, v1), &vb);
+  jg_point p, pp;
+  st = find_extremum(G, 0, fmin(v0, v1), fmax(v0, v1), &vb, &p);
   if (st != DC_OK) return st;
-  st = find_extremum(G, 1, fmin(vb, v1), fmax(vb, v1), &vp);
+  st = find_extremum(G, 1, fmin(vb, v1), fmax(vb, v1), &vp, &pp);
   if (st != DC_OK) return st;
   G->v_break = vb;
-  jg_point p;
-  jg_eval(G, vb, &p);
   G->e2_break = p.m;
   G->dbar_break = p.dbar;
   G->delta_break = G->delta_scale * p.dbar;
   G->F_break = G->F_scale * p.Pbar;
   const double dbar_b = p.dbar;
-  jg_eval(G, vp, &p);
+  p = pp;
   G->e2_pull = p.m;
   G->delta_pull = G->delta_scale * p.dbar;
   G->F_pull = G->F_scale * p.Pbar;
