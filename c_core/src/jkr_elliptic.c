@@ -405,7 +405,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   if (!hertz_ok) memset(&G->hertz, 0, sizeof G->hertz);
   G->e2_hertz = G->hertz.e2;
   G->circular = G->l2c < DC_JKR_CIRCULAR_TOL;
-  G->a_scale = cbrt(8.0 * w / (M_PI * Estar)) * cbrt(G->Rhat * G->Rhat);
+  G->a_scale = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), G->Rhat * G->Rhat);
   G->delta_scale = G->a_scale * G->a_scale / (2.0 * G->Rhat);
   G->F_scale = 8.0 * w * G->Rhat;
   if (!(G->delta_scale > 0.0)) {  /* w = 0 (or w/E* so small it underflows) */
@@ -445,7 +445,10 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
     double vn = vH - step;
     if (!(vn > 0.0 && vn < 1.0)) vn = vn <= 0.0 ? 0.5 * vH : 0.5 * (1.0 + vH);
     if (i == 40 || !isfinite(vn)) return DC_ENOCONV;
-    const int done = fabs(step) <= 4.0 * DBL_EPSILON * vH;
+    /* Newton is quadratic: once the step is at the rounding level of Qn
+       (which can leave it a few eps above 4 eps vH for ever, seen at
+       R_minor/R_major = 0.0772), applying it is exact to rounding */
+    const int done = fabs(step) <= 64.0 * DBL_EPSILON * vH;
     vH = vn;
     if (done) break;
   }
@@ -477,19 +480,21 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   jg_eval(G, vH, &p);
   G->pert_X0 = p.X;
   G->pert_g0 = p.g;
+  G->pert_rho0 = sqrt(p.g) * sqrt(p.X) * sqrt(sqrt(p.X));   /* g0^1/2 X0^3/4 */
   G->pert_X1 = p.dX / p.drho;
   G->pert_g1 = p.dg / p.drho;
   G->pert_P0 = p.Y / (p.X * sqrt(p.X));
   G->pert_P1 = (p.dY * p.X - 1.5 * p.Y * p.dX) / (p.X * p.X * sqrt(p.X)) / p.drho;
   const double rho_sw = 1e-8 * vH * fabs(p.drho);
-  G->dbar_switch = cbrt(p.g * p.g) * p.X * pow(rho_sw, -4.0 / 3.0);
+  const double g23X = dc_jkr_cbrt_(p.g * p.g) * p.X, crs = dc_jkr_cbrt_(rho_sw);
+  G->dbar_switch = g23X / (crs * crs * crs * crs);   /* g^2/3 X rho_sw^-4/3 */
   /* Starting values: |v_H - v| = |v_H - v_b|/(1 + c1 d^1/2 + c2 d^3/4),
      d = dbar - dbar_b; c2 from the Hertz asymptote (rho = |drho/dv|
      |v_H - v|, dbar = g^2/3 X rho^-4/3), c1 through the pull-off point. */
   const double span = fabs(vH - vb);
-  G->guess_c2 = span * fabs(p.drho) * pow(cbrt(p.g * p.g) * p.X, -0.75);
+  G->guess_c2 = span * fabs(p.drho) / (sqrt(g23X) * sqrt(sqrt(g23X)));   /* (g^2/3 X)^-3/4 */
   const double dp = G->delta_pull / G->delta_scale - dbar_b;
-  const double need = span / fabs(vH - vp) - 1.0 - G->guess_c2 * pow(dp, 0.75);
+  const double need = span / fabs(vH - vp) - 1.0 - G->guess_c2 * sqrt(dp) * sqrt(sqrt(dp));
   G->guess_c1 = need > 0.0 ? need / sqrt(dp) : 0.0;
   return DC_OK;
 }
@@ -557,7 +562,7 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
   if (dbar_t > G->dbar_switch) {
     /* first order in rho ~ dbar^-3/4 < 3e-8: the neglected O(rho^2) is
        below rounding */
-    const double rho = sqrt(G->pert_g0) * pow(G->pert_X0, 0.75) * pow(dbar_t, -0.75);
+    const double rho = G->pert_rho0 / (sqrt(dbar_t) * sqrt(sqrt(dbar_t)));
     const double X = G->pert_X0 + G->pert_X1 * rho;
     const double g = G->pert_g0 + G->pert_g1 * rho;
     const double Fd = G->F_scale * dbar_t * sqrt(dbar_t);

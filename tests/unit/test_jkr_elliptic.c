@@ -348,6 +348,46 @@ static void test_robustness(void)
   CHECK(dc_jkr_geometry(1e-3, 1e-4, 1e9, INFINITY, &G) == DC_EDOM);
 }
 
+/* Random geometries (fixed seed): radii 1e-6 .. 1 m, ratio down to the
+   domain's 1e-6, E* 1e5 .. 1e12 Pa, w 1e-6 .. 10 J/m^2; the geometry and
+   contacts along the whole curve must succeed. The first case is one that
+   a superquadric deck hit (Hertz-shape Newton stuck 1.5 eps above its stop). */
+static void test_random_geometries(void)
+{
+  unsigned long long x = 88172645463325252ull;
+  int bad = 0, n = 0;
+  for (int k = 0; k < 60000; k++) {
+    double u[4];
+    for (int i = 0; i < 4; i++) {
+      x ^= x << 13; x ^= x >> 7; x ^= x << 17;
+      u[i] = (x >> 11) * 0x1.0p-53;
+    }
+    double R1 = pow(10.0, -6.0 + 6.0 * u[0]), R2 = R1 * pow(10.0, -6.0 * u[1]);
+    double E = pow(10.0, 5.0 + 7.0 * u[2]), w = pow(10.0, -6.0 + 7.0 * u[3]);
+    if (k == 0) { R1 = 0.018443239080235201; R2 = 0.00142494; E = 5e6 / (2 * 0.91); w = 0.05; }
+    dc_jkr_geom G;
+    int st = dc_jkr_geometry(R1, R2, E, w, &G);
+    n++;
+    if (st != DC_OK) {
+      if (bad < 5) printf("random geometry %d: R1 %.17g R2 %.17g E %g w %g: status %d\n", k, R1, R2, E, w, st);
+      bad++;
+      continue;
+    }
+    dc_jkr_hint hint = {0};
+    for (int i = 0; i <= 8; i++) {
+      const double d = i == 0 ? G.delta_break : G.delta_break * (1.0 - pow(4.0, i - 2));
+      dc_jkr_state s;
+      st = dc_jkr_contact(&G, d, &hint, &s);
+      if (st != DC_OK || !(isfinite(s.F) && s.contact == 1)) {
+        if (bad < 5) printf("random contact %d: R1 %.17g R2 %.17g E %g w %g delta %g: status %d\n", k, R1, R2, E, w, d, st);
+        bad++;
+      }
+    }
+  }
+  printf("random geometries: %d, failures %d\n", n, bad);
+  CHECK(bad == 0);
+}
+
 int main(void)
 {
   test_sphere_table();
@@ -358,5 +398,6 @@ int main(void)
   test_hertz_limit();
   test_curve_shape();
   test_robustness();
+  test_random_geometries();
   return check_summary("test_jkr_elliptic");
 }

@@ -96,6 +96,7 @@ typedef struct {
      F / (F_scale dbar^3/2) = P0 + P1 rho, rho = g0^1/2 X0^3/4 dbar^-3/4,
      where the distance to the Hertz state is < 1e-8 of its e^2 scale */
   double pert_X0, pert_X1, pert_g0, pert_g1, pert_P0, pert_P1;
+  double pert_rho0;              /* g0^1/2 X0^3/4: rho = pert_rho0 dbar^-3/4 */
   double dbar_switch;            /* delta/delta_scale above which it is used */
   int use_m1;                    /* solver variable: 1 - e^2 (slender) or e^2 */
   double v_hertz, v_break;       /* e2_hertz, e2_break in that variable      */
