@@ -398,8 +398,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   G->w = w;
   /* The w = 0 contact is dc_hertz_contact with this geometry. For w > 0 it
      only gives the starting value of the Hertz shape, which near the circle
-     is not needed: there a failure of dc_hertz_geometry (it returns
-     DC_ENOCONV at 1 - ratio = 1e-9 and 1e-15) is not passed on. */
+     (1 - ratio < 1e-3) is not needed: a failure there is not passed on. */
   int st = dc_hertz_geometry(Rmaj, Rmin, &G->hertz);
   const int hertz_ok = st == DC_OK;
   if (!hertz_ok) memset(&G->hertz, 0, sizeof G->hertz);
