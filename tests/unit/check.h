@@ -48,6 +48,13 @@ static int check_abs_(double got, double want, double tol, const char *what,
 #define CHECK_REL(got, want, tol, what) check_rel_((got), (want), (tol), (what), __FILE__, __LINE__)
 #define CHECK_ABS(got, want, tol, what) check_abs_((got), (want), (tol), (what), __FILE__, __LINE__)
 
+/* Uniform [0, 1) from a xorshift64 state (fixed seeds: reproducible sweeps). */
+static double check_uniform(unsigned long long *x)
+{
+  *x ^= *x << 13; *x ^= *x >> 7; *x ^= *x << 17;
+  return (double)(*x >> 11) * 0x1.0p-53;
+}
+
 static int check_summary(const char *suite)
 {
   printf("%s: %d passed, %d failed\n", suite, check_passed_, check_failed_);

@@ -91,5 +91,19 @@ int main(void)
   CHECK(dc_feng_init(50.01, DC_FENG_FITTED, &L) == DC_EDOM);
   CHECK(dc_feng_init(NAN, DC_FENG_FITTED, &L) == DC_EDOM);
   CHECK(dc_feng_init(5, 7, &L) == DC_EDOM);
+  /* random laws and overlaps (fixed seed): mu in [1, 50], both variants,
+     delta from -4 sigma to 1000 sigma: finite, non-negative force */
+  unsigned long long x = 88172645463325252ull;
+  int bad = 0;
+  for (int k = 0; k < 100000; k++) {
+    const double mu = 1.0 + 49.0 * check_uniform(&x), u = check_uniform(&x);
+    const double d = sigma * (-4.0 + 1e3 * u * u);
+    if (dc_feng_init(mu, k & 1 ? DC_FENG_FITTED : DC_FENG_TABLE, &L) != DC_OK ||
+        dc_feng_force(&L, 1e9, 1e-3, sigma, d, &p, &kn) != DC_OK || !(isfinite(p) && isfinite(kn) && p >= 0.0)) {
+      if (bad < 5) printf("random Feng: mu %g delta/sigma %g: P %g\n", mu, d / sigma, p);
+      bad++;
+    }
+  }
+  CHECK(bad == 0);
   return check_summary("feng_rough");
 }

@@ -94,5 +94,20 @@ int main(void)
   CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, R, 0.0, -1e-6, &kt) == DC_OK && kt == 0.0);
   CHECK(dc_rough_tangential_stiffness(G, chi, 1.0, -R, 1e-7, 1e-6, &kt) == DC_EDOM);
   CHECK(dc_mindlin_chi(&g, 0.6, 0.0, &chi) == DC_EDOM);
+  /* random elliptic GW contacts (fixed seed): radii 1e-6 .. 1 m, ratio down
+     to 1e-6, sigma 1e-9 .. 1e-3 R, n_asp 1e-2 .. 1e6, delta in [-4, 10] sigma */
+  unsigned long long x = 88172645463325252ull;
+  int bad = 0;
+  for (int k = 0; k < 200000; k++) {
+    const double R1 = pow(10.0, -6.0 + 6.0 * check_uniform(&x)), R2 = R1 * pow(10.0, -6.0 * check_uniform(&x));
+    const double E = pow(10.0, 5.0 + 7.0 * check_uniform(&x)), sig = R1 * pow(10.0, -9.0 + 6.0 * check_uniform(&x));
+    const double n = pow(10.0, -2.0 + 8.0 * check_uniform(&x)), d = sig * (-4.0 + 14.0 * check_uniform(&x));
+    if (dc_hertz_geometry(R1, R2, &g) != DC_OK || dc_gw_rough_elliptic(&g, E, n, sig, d, &rs) != DC_OK ||
+        !(isfinite(rs.F) && isfinite(rs.kn) && isfinite(rs.area) && rs.F >= 0.0 && rs.kn >= 0.0)) {
+      if (bad < 5) printf("random GW: R1 %g R2 %g sigma %g delta %g: F %g\n", R1, R2, sig, d, rs.F);
+      bad++;
+    }
+  }
+  CHECK(bad == 0);
   return check_summary("gw_rough");
 }

@@ -108,5 +108,22 @@ int main(void)
     if (1.0 - r < 1e-6) CHECK_ABS(e2c, 4.0 / 3.0 * (1.0 - r), 4e-16 + 1e-6 * (1.0 - r), what);
     CHECK(dc_hertz_geometry(1.0, r, &g) == DC_OK);
   }
+  /* random geometries and contacts (fixed seed): radii 1e-6 .. 1 m, ratios
+     down to 1e-12 and up to 1 - 1e-16, overlaps 1e-12 .. 0.1 R */
+  unsigned long long x = 88172645463325252ull;
+  int bad = 0;
+  for (int k = 0; k < 200000; k++) {
+    const double R1 = pow(10.0, -6.0 + 6.0 * check_uniform(&x));
+    const double u = check_uniform(&x);
+    const double R2 = R1 * (k & 1 ? pow(10.0, -12.0 * u) : 1.0 - pow(10.0, -16.0 * u));
+    dc_hertz_state h;
+    if (dc_hertz_geometry(R1, R2, &g) != DC_OK ||
+        dc_hertz_contact(&g, pow(10.0, 5.0 + 7.0 * check_uniform(&x)), R1 * pow(10.0, -12.0 + 11.0 * check_uniform(&x)), &h) != DC_OK ||
+        !(isfinite(h.F) && isfinite(h.kn) && h.F > 0.0)) {
+      if (bad < 5) printf("random Hertz: R1 %.17g R2 %.17g\n", R1, R2);
+      bad++;
+    }
+  }
+  CHECK(bad == 0);
   return check_summary("hertz_elliptic");
 }

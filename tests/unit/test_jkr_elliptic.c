@@ -358,10 +358,7 @@ static void test_random_geometries(void)
   int bad = 0, n = 0;
   for (int k = 0; k < 60000; k++) {
     double u[4];
-    for (int i = 0; i < 4; i++) {
-      x ^= x << 13; x ^= x >> 7; x ^= x << 17;
-      u[i] = (x >> 11) * 0x1.0p-53;
-    }
+    for (int i = 0; i < 4; i++) u[i] = check_uniform(&x);
     double R1 = pow(10.0, -6.0 + 6.0 * u[0]), R2 = R1 * pow(10.0, -6.0 * u[1]);
     double E = pow(10.0, 5.0 + 7.0 * u[2]), w = pow(10.0, -6.0 + 7.0 * u[3]);
     if (k == 0) { R1 = 0.018443239080235201; R2 = 0.00142494; E = 5e6 / (2 * 0.91); w = 0.05; }
@@ -385,6 +382,20 @@ static void test_random_geometries(void)
     }
   }
   printf("random geometries: %d, failures %d\n", n, bad);
+  CHECK(bad == 0);
+  /* spheres: near separation and deep, every scale */
+  bad = 0;
+  for (int k = 0; k < 100000; k++) {
+    const double R = pow(10.0, -6.0 + 6.0 * check_uniform(&x)), E = pow(10.0, 5.0 + 7.0 * check_uniform(&x));
+    const double w = pow(10.0, -8.0 + 9.0 * check_uniform(&x)), db = dc_jkr_sphere_delta_break(R, E, w);
+    const double d = k & 1 ? db * (1.0 - pow(10.0, -15.0 * check_uniform(&x)))
+                           : R * pow(10.0, -12.0 + 11.0 * check_uniform(&x));
+    dc_jkr_state s;
+    if (dc_jkr_sphere(R, E, w, d, &s) != DC_OK || !s.contact || !(isfinite(s.F) && isfinite(s.kn) && s.a > 0.0)) {
+      if (bad < 5) printf("random sphere: R %g E %g w %g delta %g: F %g\n", R, E, w, d, s.F);
+      bad++;
+    }
+  }
   CHECK(bad == 0);
 }
 
