@@ -115,9 +115,8 @@ static void law_nodes(void)
      solver must reproduce them (4-digit coefficients: ~1e-3 absolute) */
   dc_gw_solver S;
   dc_gw_solver_init(&S, 40);
-  const double ap_nodes[] = {3.0, 1.5, 2.0, -0.75, -1.5, -2.25, -3.0};  /* alpha = 1/3, 2/3; alpha' = 1/2 ... */
+  /* nodes: alpha = 1/3, 2/3 (alpha' = 3, 1.5); alpha' = 1/2; -3/4 ... -3 */
   const double aps[] = {3.0, 1.5, 0.5, -0.75, -1.5, -2.25, -3.0};
-  (void)ap_nodes;
   double worst = 0;
   for (int i = 0; i < 7; i++) {
     dc_feng_law L;
