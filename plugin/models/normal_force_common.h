@@ -21,15 +21,18 @@ inline double sphereEffectiveRadius(const SurfacesIntersectData &sidata)
   return sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
 }
 
-/* Connects the per-type-pair E*, G* and restitution-damping coefficient. */
+/* Connects the per-type-pair E*, G* and, for restitution damping, its
+   coefficient (which needs coefficientRestitution in the deck). */
 inline void connectElasticProperties(PropertyRegistry &registry, const char *caller,
-                                     double **&Yeff, double **&Geff, double **&betaeff)
+                                     double **&Yeff, double **&Geff, double **&betaeff,
+                                     bool restitution = true)
 {
   registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller);
   registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller);
-  registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller);
   registry.connect("Yeff", Yeff, caller);
   registry.connect("Geff", Geff, caller);
+  if (!restitution) return;
+  registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller);
   registry.connect("betaeff", betaeff, caller);
 }
 

@@ -69,16 +69,9 @@ public:
 
   void connectToProperties(PropertyRegistry &registry)
   {
-    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, "model hertz_elliptic");
-    registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, "model hertz_elliptic");
-    registry.connect("Yeff", Yeff, "model hertz_elliptic");
-    registry.connect("Geff", Geff, "model hertz_elliptic");
-    if (viscoelastic) {
-      connectViscoelasticTime(registry, "model hertz_elliptic", viscoelasticTime);
-    } else {
-      registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, "model hertz_elliptic");
-      registry.connect("betaeff", betaeff, "model hertz_elliptic");
-    }
+    const char *caller = "model hertz_elliptic";
+    connectElasticProperties(registry, caller, Yeff, Geff, betaeff, !viscoelastic);
+    if (viscoelastic) connectViscoelasticTime(registry, caller, viscoelasticTime);
   }
 
   inline double stressStrainExponent() { return 1.5; }

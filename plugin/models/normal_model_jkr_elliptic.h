@@ -93,7 +93,7 @@ public:
   void connectToProperties(PropertyRegistry &registry)
   {
     const char *caller = "model jkr_elliptic";
-    connectElasticProperties(registry, caller, Yeff, Geff, betaeff);
+    connectElasticProperties(registry, caller, Yeff, Geff, betaeff, !viscoelastic);
     registry.registerProperty("workOfAdhesion", &createWork, caller);
     registry.connect("workOfAdhesion", work, caller);
     if (viscoelastic) connectViscoelasticTime(registry, caller, viscoelasticTime);
