@@ -142,6 +142,17 @@ inline void dampedNormalForce(SurfacesIntersectData &sidata, double P, double vn
   dampedForce(sidata, P, vn, gamman, gammat, kn, kt, limitForce, nktv2p, x, i_forces, j_forces);
 }
 
+/* dampedForce with viscoelastic damping of time A on the tangent stiffness:
+   F_dis = A (d delta/dt) Sn (`viscoelastic on`; d delta/dt = -vn). */
+inline void viscoelasticNormalForce(SurfacesIntersectData &sidata, double P, double vn, double Sn,
+                                    double kn, double kt, double A, bool tangential_damping,
+                                    bool limitForce, double nktv2p, double **x,
+                                    ForceData &i_forces, ForceData &j_forces)
+{
+  dampedForce(sidata, P, vn, A * Sn, tangential_damping ? A * kt : 0.0, kn, kt, limitForce, nktv2p, x,
+              i_forces, j_forces);
+}
+
 }
 }
 #endif

@@ -82,7 +82,6 @@ public:
     const int itype = sidata.itype;
     const int jtype = sidata.jtype;
     const double deltan = sidata.deltan;
-    const double meff = sidata.meff;
 
     /* R_force and R_area: the effective radius for spheres (stock hertz) */
     double r_force = sphereEffectiveRadius(sidata);
@@ -94,28 +93,13 @@ public:
 
     double kn, Sn, kt;
     hertzStiffness(Yeff[itype][jtype], Geff[itype][jtype], r_force, r_area, deltan, kn, Sn, kt);
-    double gamman, gammat;
-    if (viscoelastic) {
-      /* Brilliantov: F_dis = A d(delta)/dt dF/d(delta) (review Eq. 37) */
-      const double A = viscoelasticTime[itype][jtype];
-      gamman = A * Sn;
-      gammat = tangential_damping ? A * kt : 0.0;
-    } else {
-      gamman = restitutionDamping(betaeff[itype][jtype], Sn, meff);
-      gammat = tangential_damping ? restitutionDamping(betaeff[itype][jtype], kt, meff) : 0.0;
-    }
-    kn /= force->nktv2p;
-    kt /= force->nktv2p;
-
-    double Fn = -gamman * sidata.vn + kn * deltan;
-    if (limitForce && Fn < 0.0) Fn = 0.0;
-
-    sidata.Fn = Fn;
-    sidata.kn = kn;
-    sidata.kt = kt;
-    sidata.gamman = gamman;
-    sidata.gammat = gammat;
-    applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
+    /* viscoelastic: Brilliantov, F_dis = A d(delta)/dt dF/d(delta) (review Eq. 37) */
+    if (viscoelastic)
+      viscoelasticNormalForce(sidata, kn * deltan, sidata.vn, Sn, kn, kt, viscoelasticTime[itype][jtype],
+                              tangential_damping, limitForce, force->nktv2p, atom->x, i_forces, j_forces);
+    else
+      dampedNormalForce(sidata, kn * deltan, sidata.vn, Sn, kn, kt, betaeff[itype][jtype],
+                        tangential_damping, limitForce, force->nktv2p, atom->x, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)

@@ -225,10 +225,9 @@ private:
       kn = Sn;
     }
     if (viscoelastic) {
-      /* F_dis = A (d delta/dt) k_punch, d delta/dt = -vn (dc/dissipation_adhesive.h) */
-      const double A = viscoelasticTime[itype][jtype];
-      dampedForce(sidata, P, vn, A * Sn, tangential_damping ? A * kt : 0.0, kn, kt, false,
-                  force->nktv2p, atom->x, i_forces, j_forces);
+      /* F_dis = A (d delta/dt) k_punch (dc/dissipation_adhesive.h) */
+      viscoelasticNormalForce(sidata, P, vn, Sn, kn, kt, viscoelasticTime[itype][jtype], tangential_damping,
+                              false, force->nktv2p, atom->x, i_forces, j_forces);
     } else {
       dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
                         false, force->nktv2p, atom->x, i_forces, j_forces);
