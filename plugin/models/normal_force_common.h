@@ -6,11 +6,15 @@
 #define DC_PLUGIN_NORMAL_FORCE_COMMON_H
 
 #include <cmath>
+#include <cstdio>
 #include "atom.h"
 #include "contact_interface.h"
+#include "error.h"
 #include "global_properties.h"
 #include "property_registry.h"
 #include "vector_liggghts.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/status.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -19,6 +23,18 @@ namespace ContactModels {
 inline double sphereEffectiveRadius(const SurfacesIntersectData &sidata)
 {
   return sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
+}
+
+/* dc_hertz_geometry of relative radii R1, R2; a degenerate geometry stops
+   the run with a message naming the model and the radii. */
+inline void hertzGeometry(LAMMPS_NS::Error *error, const char *model, double R1, double R2, dc_hertz_geom &g)
+{
+  const int st = dc_hertz_geometry(R1, R2, &g);
+  if (st != DC_OK) {
+    char msg[256];
+    snprintf(msg, sizeof msg, "Normal model %s: relative radii %g, %g: %s", model, R1, R2, dc_status_str(st));
+    error->one(FLERR, msg);
+  }
 }
 
 /* Connects the per-type-pair E*, G* and, for restitution damping, its

@@ -181,11 +181,11 @@ private:
     if (sidata.is_non_spherical && atom->superquadric_flag) {
       double R_major, R_minor;
       curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_rough");
-      geometry(R_major, R_minor, g);
+      hertzGeometry(error, "gw_rough", R_major, R_minor, g);
       reff = g.Rc;
     } else
 #endif
-    if (gwElliptic && sigma != 0.0) geometry(reff, reff, g);
+    if (gwElliptic && sigma != 0.0) hertzGeometry(error, "gw_rough", reff, reff, g);
     double P, Sn, kn, kt = 0.0;
     if (sigma == 0.0) {
       hertzStiffness(Y, Geff[itype][jtype], g.R_force, g.R_area, delta, kn, Sn, kt);
@@ -211,16 +211,6 @@ private:
        for every mu (dP/d delta < 0 near alpha' = -2.5 at mu = 4) */
     dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
                       limitForce, force->nktv2p, atom->x, i_forces, j_forces);
-  }
-
-  void geometry(double R1, double R2, dc_hertz_geom &g)
-  {
-    const int st = dc_hertz_geometry(R1, R2, &g);
-    if (st != DC_OK) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Normal model gw_rough: relative radii %g, %g: %s", R1, R2, dc_status_str(st));
-      error->one(FLERR, msg);
-    }
   }
 
   static MatrixProperty *createRoughness(PropertyRegistry &registry, const char *caller, bool sanity_checks)

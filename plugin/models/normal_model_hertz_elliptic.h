@@ -117,12 +117,7 @@ private:
     double R_major, R_minor;
     curvature.relativeRadii(lmp, sidata, R_major, R_minor, "hertz_elliptic");
     dc_hertz_geom g;
-    const int st = dc_hertz_geometry(R_major, R_minor, &g);
-    if (st != DC_OK) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Normal model hertz_elliptic: relative radii %g, %g: %s", R_major, R_minor, dc_status_str(st));
-      error->one(FLERR, msg);
-    }
+    hertzGeometry(error, "hertz_elliptic", R_major, R_minor, g);
     r_force = g.R_force;
     r_area = g.R_area;
   }
