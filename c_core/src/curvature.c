@@ -73,3 +73,20 @@ int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
   /* Eq. 3: 1/R_i = (sum - root)/2, Eq. 4: 1/R_j = (sum + root)/2 */
   return radii_from_curvatures(0.5 * (sum + root), 0.5 * (sum - root), R_major, R_minor);
 }
+
+void dc_form_major_axis(const double form[3], const double u[3], const double v[3], double axis[3])
+{
+  double k1, k2;
+  dc_form_principal(form, &k1, &k2, 0);
+  /* (form - k2 I) x = 0: the two rows give (form1, k2 - form0) and
+     (k2 - form2, form1); the longer is the better conditioned */
+  double x = form[1], y = k2 - form[0];
+  const double x2 = k2 - form[2], y2 = form[1];
+  if (x2 * x2 + y2 * y2 > x * x + y * y) { x = x2; y = y2; }
+  const double n = sqrt(x * x + y * y);
+  if (!(n > 1e-12 * (fabs(k1) + fabs(k2))) || !isfinite(n)) {
+    axis[0] = axis[1] = axis[2] = 0.0;
+    return;
+  }
+  for (int k = 0; k < 3; k++) axis[k] = (x * u[k] + y * v[k]) / n;
+}

@@ -5,15 +5,6 @@
 #include "dc/status.h"
 #include <math.h>
 
-int dc_mindlin_chi(const dc_hertz_geom *g, double nu, double theta, double *chi)
-{
-  if (!(nu >= 0.0 && nu <= 0.5 && isfinite(theta))) return DC_EDOM;
-  const double c = cos(theta), s = sin(theta);
-  const double A = (1.0 - nu) * g->K + nu * g->D, B = g->K - nu * g->D;
-  *chi = 1.0 / sqrt(A * A * c * c + B * B * s * s);
-  return DC_OK;
-}
-
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
                                   double sigma, double delta, double *kt)
 {

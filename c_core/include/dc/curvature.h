@@ -42,6 +42,13 @@ int dc_form_relative_radii(const double form[3], double *R_major, double *R_mino
 int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
                       double omega, double *R_major, double *R_minor);
 
+/* Unit direction, in space, of the major axis of the contact ellipse of a
+   relative curvature form on the basis (u, v): the principal direction of
+   the smaller relative curvature (the R_major direction, along which the
+   semi-axis a lies). Zero vector when the form is circular to rounding
+   (the patch has no major axis) or not finite. */
+void dc_form_major_axis(const double form[3], const double u[3], const double v[3], double axis[3]);
+
 #ifdef __cplusplus
 }
 #endif

@@ -27,6 +27,7 @@
 #ifndef DC_GW_ROUGH_H
 #define DC_GW_ROUGH_H
 
+#include <math.h>
 #include "dc/hertz_elliptic.h"
 
 #ifdef __cplusplus
@@ -44,6 +45,14 @@ typedef struct {
    sign; with sigma = 0 and delta <= 0 the force is 0). DC_EDOM otherwise. */
 int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
                          double sigma, double delta, dc_gw_rough_state *s);
+
+/* rms summit height of a contact of two rough surfaces with rms summit
+   heights sigma_i, sigma_j >= 0 (independent Gaussian heights):
+   sigma = (sigma_i^2 + sigma_j^2)^1/2. Inline, unchecked. */
+static inline double dc_gw_roughness_combine(double sigma_i, double sigma_j)
+{
+  return sqrt(sigma_i * sigma_i + sigma_j * sigma_j);
+}
 
 #ifdef __cplusplus
 }

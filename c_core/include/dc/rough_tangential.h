@@ -32,15 +32,13 @@
 #define DC_ROUGH_TANGENTIAL_H
 
 #include "dc/hertz_elliptic.h"
+#include "dc/mindlin.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* Mindlin's chi for the contact ellipse of g, Poisson ratio nu in [0, 0.5]
-   and slip angle theta. DC_EDOM outside. */
-int dc_mindlin_chi(const dc_hertz_geom *g, double nu, double theta, double *chi);
-
+/* chi (Mindlin, review Eq. 57) is dc_mindlin_chi in dc/mindlin.h. */
 /* k_t of Eq. 83. Domain: G > 0, n_asp > 0, R_asp > 0, sigma >= 0, chi > 0,
    all finite; delta finite (k_t = 0 when sigma = 0 and delta <= 0). */
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
