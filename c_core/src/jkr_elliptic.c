@@ -1,184 +1,19 @@
-/* Johnson-Greenwood approximate JKR for elliptical contacts and classical
-   JKR for spheres (review Eqs. 19-28; derivation, conventions and the seed
-   corrections are in dc/jkr_elliptic.h). */
+/* Johnson-Greenwood approximate JKR for elliptical contacts (review Eqs.
+   19-28; derivation, conventions and the seed corrections are in
+   dc/jkr_elliptic.h): the state as a function of the eccentricity, and the
+   geometry of a contact (Hertz shape, separation and pull-off points by
+   the extremum searches). The solve for a given overlap, dc_jkr_contact, is
+   in jkr_elliptic_solve.c; classical JKR for spheres in jkr_sphere.c. */
 #include "dc/jkr_elliptic.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
+#include "jkr_cbrt.h"
 #include "jkr_extrema_guess.h"
+#include "jkr_private.h"
 #include <float.h>
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
-
-#define KN_MAX 1e300
-
-/* Cube root of a positive normal double, to < 1 ulp (the libm cbrt costs
-   ~30 ns here, through frexp/scalbn). Exponent/3 by integer arithmetic on
-   the high word (~6% error), a degree-4 polynomial correction in r = t^3/x
-   (fdlibm's cbrt coefficients, ~23 bits), rounding of t to 21 bits so that
-   t^2 is exact, and one Halley-like step t + t (x/t^2 - t)/(2t + x/t^2),
-   exact to rounding. Zero, subnormal, huge and non-finite x go to cbrt(). */
-static inline double dc_jkr_cbrt_(double x)
-{
-  if (!(x >= DBL_MIN && x <= DBL_MAX)) return cbrt(x);
-  uint64_t u;
-  memcpy(&u, &x, sizeof u);
-  u = ((u >> 32) / 3 + 715094163u) << 32;       /* (1023 - 1023/3 - 0.03306235651) 2^20 */
-  double t;
-  memcpy(&t, &u, sizeof t);
-  double r = (t * t) * (t / x);
-  t = t * ((1.87595182427177009643 + r * (-1.88497979543377169875 + r * 1.621429720105354466140)) +
-           ((r * r) * r) * (-0.758397934778766047437 + r * 0.145996192886612446982));
-  memcpy(&u, &t, sizeof u);
-  u = (u + 0x80000000u) & 0xffffffffc0000000ull;
-  memcpy(&t, &u, sizeof t);
-  const double s = t * t;
-  r = x / s;
-  r = (r - t) / ((t + t) + r);
-  return t + t * r;
-}
-
-/* (p q)^1/3 for p, q > 0, as one cube root when p q is a normal number,
-   else as the product of two (w/E* and R^2 can be far apart). */
-static inline double dc_jkr_cbrt_scale_(double p, double q)
-{
-  const double pq = p * q;
-  if (pq >= DBL_MIN && pq <= DBL_MAX) return dc_jkr_cbrt_(pq);
-  return cbrt(p) * cbrt(q);
-}
-
-/* ------------------------------------------------------------------ */
-/* Classical JKR for spheres.                                          */
-/* Units: C1 = 8 w R^2/(pi E*), a = C1^1/3 x^2, delta = C1^2/3/(2R) dbar,
-   F = 8 w R Fbar. With rho = x^-3 the elliptic formulas at g = 1 give
-     dbar = 2 x^4 - pi x,   Fbar = 4/(3 pi) x^6 - x^3.                  */
-
-static double finite_kn(double num, double den)
-{
-  if (den > 0.0 && num < KN_MAX * den) return num / den;
-  return num >= 0.0 ? KN_MAX : -KN_MAX;
-}
-
-static void sphere_fill(double R, double Estar, double w, double a, dc_jkr_state *s)
-{
-  /* q = (2 pi w a/E*)^1/2: F = 4 E* a^3/(3R) - 2 E* a q, delta = a^2/R - q */
-  const double q = sqrt(2.0 * M_PI * w * a / Estar);
-  s->contact = 1;
-  s->a = s->b = a;
-  s->area = M_PI * a * a;
-  s->e2 = 0.0;
-  s->F = 4.0 * Estar * a * a * a / (3.0 * R) - 2.0 * Estar * a * q;
-  s->delta = a * a / R - q;
-  /* dF/da = 4 E* a^2/R - 3 E* q, d delta/da = 2a/R - q/(2a) */
-  const double num = 4.0 * Estar * a * a / R - 3.0 * Estar * q;
-  const double den = 2.0 * a / R - 0.5 * q / a;
-  s->kn = finite_kn(num, den);
-}
-
-int dc_jkr_sphere_at_radius(double R, double Estar, double w, double a, dc_jkr_state *s)
-{
-  if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && a > 0.0 && isfinite(R) && isfinite(Estar) &&
-        isfinite(w) && isfinite(a)))
-    return DC_EDOM;
-  sphere_fill(R, Estar, w, a, s);
-  return DC_OK;
-}
-
-double dc_jkr_sphere_pulloff(double R, double w) { return 1.5 * M_PI * w * R; }
-
-double dc_jkr_sphere_delta_break(double R, double Estar, double w)
-{
-  return -0.75 * cbrt(M_PI * M_PI * w * w * R / (Estar * Estar));
-}
-
-static void zero_state(double delta, dc_jkr_state *s)
-{
-  memset(s, 0, sizeof *s);
-  s->delta = delta;
-}
-
-int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s)
-{
-  if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && isfinite(R) && isfinite(Estar) && isfinite(w) &&
-        isfinite(delta)))
-    return DC_EDOM;
-  const double As = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), R * R);
-  const double Ds = As * As / (2.0 * R);
-  if (!(Ds > 0.0) || delta > 1e10 * Ds) {
-    /* Hertz-dominated (or w = 0): a^2 = R (delta + (2 pi w a/E*)^1/2).
-       With a0 = (R delta)^1/2 and t0 = (2 pi w a0/E*)^1/2/delta ~ dbar^-3/4
-       <= 3e-8, a = a0 (1 + t0/2) + O(t0^3): the t0^2 terms of the square
-       root and of t(a) = t0 (a/a0)^1/2 cancel. */
-    if (delta < 0.0) { zero_state(delta, s); return DC_OK; }
-    if (delta == 0.0) {
-      zero_state(delta, s);
-      if (w == 0.0) s->contact = 1;
-      return DC_OK;
-    }
-    const double a0 = sqrt(R * delta);
-    const double a = a0 + 0.5 * a0 * sqrt(2.0 * M_PI * w * a0 / Estar) / delta;
-    sphere_fill(R, Estar, w, a, s);
-    s->delta = delta;
-    return DC_OK;
-  }
-  /* With x = x_b (1 + y), x_b^3 = pi/8 (the separation point), the quartic
-     2 x^4 - pi x = dbar becomes y^2 (y^2 + 4 y + 6) = U, U = (dbar - dbar_b)
-     / (2 x_b^4) >= 0. In p = y^2 + 2 y it reads p k(p) = U^1/2 with k =
-     (1 + 2/(1 + (1 + p)^1/2)^2)^1/2 falling from 1.5^1/2 to 1; the rational
-     p ~ s (k0 b + s)/(b + s), s = U^1/2, k0 = 1.5^-1/2, b = 3.69 is within
-     2.5e-3 of the root for every U >= 0, and two Halley steps on the
-     quartic then reach rounding (2.5e-3 -> 5e-9 -> 2e-16, checked over U in
-     [1e-64, 1e20]). No transcendental call; one cube root for the scale. */
-  const double xb = 0.73229594378076163;       /* (pi/8)^1/3            */
-  const double inv2xb4 = 1.7386953397031944;   /* 1/(2 x_b^4) = 4/(pi x_b) */
-  const double dbar_b = -1.7254316679264337;   /* 2 x_b^4 - pi x_b = -3/4 pi x_b */
-  const double delta_b = Ds * dbar_b;
-  /* the separation test agrees with dc_jkr_sphere_delta_break (the
-     overlap dc_jkr_in_contact uses) to the last bit: the cbrt is only
-     taken below delta_b */
-  if (delta < delta_b && delta < dc_jkr_sphere_delta_break(R, Estar, w)) { zero_state(delta, s); return DC_OK; }
-  const double U = fmax(0.0, (delta - delta_b) / Ds * inv2xb4);
-  double y = 0.0;
-  if (U > 0.0) {
-    const double sU = sqrt(U);
-    const double p = sU * (0.81649658092772603 * 3.69 + sU) / (3.69 + sU);
-    y = p / (1.0 + sqrt(1.0 + p));
-    for (int i = 0; i < 2; i++) {
-      /* Halley on P = y^2 (y^2 + 4y + 6) - U: P' = 4y (y^2 + 3y + 3),
-         P'' = 12 (y^2 + 2y + 1) */
-      const double y2 = y * y;
-      const double P = y2 * (y2 + 4.0 * y + 6.0) - U;
-      const double P1 = 4.0 * y * (y2 + 3.0 * y + 3.0);
-      const double P2 = 12.0 * (y2 + 2.0 * y + 1.0);
-      y -= 2.0 * P * P1 / (2.0 * P1 * P1 - P * P2);
-    }
-    if (!(y > 0.0)) y = 0.0;
-  }
-  const double x = xb + xb * y;
-  const double c = (1.0 + y) * (1.0 + y) * (1.0 + y);   /* 8 x^3 / pi */
-  const double a = As * x * x;
-  s->contact = 1;
-  s->a = s->b = a;
-  s->area = M_PI * a * a;
-  s->e2 = 0.0;
-  s->delta = delta;
-  /* F = 8 w R (4/(3 pi) x^3 - 1) x^3 = pi w R c (c/6 - 1) */
-  s->F = M_PI * w * R * c * (c / 6.0 - 1.0);
-  /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)),
-     with 8x^3/pi - 1 = y (3 + 3y + y^2) free of cancellation at the
-     separation point */
-  s->kn = finite_kn(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
-  return DC_OK;
-}
-
-/* ------------------------------------------------------------------ */
-/* Elliptic contacts: the state as a function of m = e^2.               */
-
-typedef struct {
-  double m, m1, g, rho, X, Y, abar, dbar, Pbar; /* values                    */
-  double dg, drho, dX, dY, dabar, ddbar, dPbar; /* d/dm                      */
-} jg_point;
 
 /* dC/dm = (D - (4 - 3m) C)/(2 m (1-m)) (from dK/dm = B/(2 m1), dD/dm =
    (D - C)/(2 m1), dB/dm = C/2). The numerator cancels to O(m) as m -> 0
@@ -220,16 +55,9 @@ static void dc_jkr_Qn_(const dc_jkr_geom *G, double m, double m1, const dc_ellin
 /* Review Eqs. 19-23 in the cancellation-free Q/u form (header comment),
    with their derivatives in the solver variable v: v = m = e^2, or, for
    slender contacts (e2_hertz > 1/2), v = m1 = 1 - e^2, which keeps full
-   relative precision of b/a when it is small. */
-static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p);
-static inline void jg_eval(const dc_jkr_geom *G, double v, jg_point *p)
-{
-  if (G->use_m1) jg_eval_m(G, 1.0 - v, v, -1.0, p);
-  else jg_eval_m(G, v, 1.0 - v, 1.0, p);
-}
-
-/* sv = dm/dv: the derivatives are returned in the solver variable v */
-static void jg_eval_m(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p)
+   relative precision of b/a when it is small (jg_eval in jkr_private.h).
+   sv = dm/dv: the derivatives are returned in the solver variable v. */
+void dc_jkr_eval_m_(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p)
 {
   /* The values (Pi2, Q, rho, abar, dbar, Pbar) are formed with true
      divisions; the derivatives, which only steer Newton's method and give
@@ -498,7 +326,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   return DC_OK;
 }
 
-static void elliptic_fill(const dc_jkr_geom *G, const jg_point *p, double s_m, dc_jkr_state *s)
+void dc_jkr_elliptic_fill_(const dc_jkr_geom *G, const jg_point *p, double s_m, dc_jkr_state *s)
 {
   /* s_m: remaining Newton correction in the solver variable, applied to
      first order */
@@ -512,7 +340,7 @@ static void elliptic_fill(const dc_jkr_geom *G, const jg_point *p, double s_m, d
   s->e2 = p->m + sg * s_m;
   s->F = G->F_scale * (p->Pbar + p->dPbar * s_m);
   s->delta = G->delta_scale * (p->dbar + p->ddbar * s_m);
-  s->kn = finite_kn(sg * G->F_scale * p->dPbar, sg * G->delta_scale * p->ddbar);
+  s->kn = dc_jkr_finite_kn_(sg * G->F_scale * p->dPbar, sg * G->delta_scale * p->ddbar);
 }
 
 int dc_jkr_at_eccentricity(const dc_jkr_geom *G, double e2, dc_jkr_state *s)
@@ -522,133 +350,7 @@ int dc_jkr_at_eccentricity(const dc_jkr_geom *G, double e2, dc_jkr_state *s)
   const double sg = G->use_m1 ? -1.0 : 1.0;
   jg_eval(G, G->use_m1 ? 1.0 - e2 : e2, &p);
   if (!(p.rho > 0.0)) return DC_ERANGE;
-  elliptic_fill(G, &p, 0.0, s);
-  if (sg * p.ddbar <= 0.0) s->kn = finite_kn(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
+  dc_jkr_elliptic_fill_(G, &p, 0.0, s);
+  if (sg * p.ddbar <= 0.0) s->kn = dc_jkr_finite_kn_(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
   return DC_OK;
-}
-
-int dc_jkr_in_contact(const dc_jkr_geom *G, int was_in_contact, double delta)
-{
-  return delta >= 0.0 || (was_in_contact && delta >= G->delta_break);
-}
-
-/* The hint after a converged solve at v (ln d = Lt): the slope du/dL of
-   u = ln((v - v_b)/(v_H - v)) against L = ln(dbar - dbar_b). */
-static void set_hint(dc_jkr_hint *h, double v, double vb, double vH, double Lt, double d, double ddbar)
-{
-  h->v = v;
-  h->L = Lt;
-  const double dudv = (vH - vb) / ((v - vb) * (vH - v));
-  const double s = dudv * d / ddbar;
-  h->dudL = isfinite(s) && s > 0.0 ? s : 0.0;
-}
-
-int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr_state *s)
-{
-  if (!isfinite(delta)) return DC_EDOM;
-  if (G->w == 0.0) {
-    if (delta < 0.0) { zero_state(delta, s); return DC_OK; }
-    dc_hertz_state h;
-    int st = dc_hertz_contact(&G->hertz, G->Estar, delta, &h);
-    if (st != DC_OK) return st;
-    s->contact = 1; s->F = h.F; s->delta = delta; s->a = h.a; s->b = h.b;
-    s->area = h.area; s->e2 = G->e2_hertz; s->kn = h.kn;
-    return DC_OK;
-  }
-  if (G->circular) return dc_jkr_sphere(G->Rhat, G->Estar, G->w, delta, s);
-  if (delta < G->delta_break) { zero_state(delta, s); return DC_OK; }
-  const double dbar_t = delta / G->delta_scale;
-  if (dbar_t > G->dbar_switch) {
-    /* first order in rho ~ dbar^-3/4 < 3e-8: the neglected O(rho^2) is
-       below rounding */
-    const double rho = G->pert_rho0 / (sqrt(dbar_t) * sqrt(sqrt(dbar_t)));
-    const double X = G->pert_X0 + G->pert_X1 * rho;
-    const double g = G->pert_g0 + G->pert_g1 * rho;
-    const double Fd = G->F_scale * dbar_t * sqrt(dbar_t);
-    s->contact = 1;
-    s->delta = delta;
-    s->F = Fd * (G->pert_P0 + G->pert_P1 * rho);
-    s->a = G->a_scale * sqrt(dbar_t / X);
-    s->b = g * s->a;
-    s->area = M_PI * s->a * s->b;
-    s->e2 = (1.0 - g) * (1.0 + g);
-    s->kn = (1.5 * s->F - 0.75 * Fd * G->pert_P1 * rho) / delta;
-    if (hint) { hint->v = G->use_m1 ? g * g : s->e2; hint->dudL = 0.0; }
-    return DC_OK;
-  }
-  const double vH = G->v_hertz, vb = G->v_break;
-  jg_point p;
-  const double dbar_b = G->dbar_break;
-  const double dtarget = dbar_t - dbar_b;
-  if (!(dtarget > 0.0)) {   /* exactly at the separation point */
-    jg_eval(G, vb, &p);
-    elliptic_fill(G, &p, 0.0, s);
-    s->delta = delta;
-    if (hint) { hint->v = vb; hint->dudL = 0.0; }
-    return DC_OK;
-  }
-  double v;
-  const double Lt = log(dtarget);
-  if (hint && (hint->v - vb) * (hint->v - vH) < 0.0) {
-    v = hint->v;
-    /* predictor: u linear in L from the previous solve (u(L) is close to
-       linear, so this is usually within the 1e-8 tolerance below and one
-       evaluation suffices) */
-    if (hint->dudL > 0.0 && isfinite(hint->L)) {
-      const double du = hint->dudL * (Lt - hint->L);
-      if (fabs(du) < 1.0) {
-        const double rn = (v - vb) / (vH - v) * exp(du);
-        const double vn = (vb + vH * rn) / (1.0 + rn);
-        if ((vn - vb) * (vn - vH) < 0.0) v = vn;
-      }
-    }
-  } else {
-    const double sd = sqrt(dtarget);
-    v = vH - (vH - vb) / (1.0 + sd * (G->guess_c1 + G->guess_c2 * sqrt(sd)));
-  }
-  /* Newton on ln(dbar(v) - dbar_b) = ln(dtarget): dbar - dbar_b grows like
-     (v - v_b)^2 at the separation point and like |v_H - v|^-4/3 at the
-     Hertz end, so its logarithm is close to linear in ln of either
-     distance and the iteration neither stalls at the vertical tangent nor
-     jumps past the pole. Bracketed: lo has dbar < target, hi dbar > target. */
-  double lo = vb, hi = vH;
-  for (int it = 0; it < 60; it++) {
-    jg_eval(G, v, &p);
-    const double d = p.dbar - dbar_b;
-    const double sgn = vH > vb ? 1.0 : -1.0;   /* dbar increases along sgn */
-    if (!(d > 0.0) || !(sgn * p.ddbar > 0.0) || !(p.rho > 0.0)) {
-      /* rounding at either end of the bracket: bisect */
-      if (!(p.rho > 0.0)) hi = v; else lo = v;
-      v = 0.5 * (lo + hi);
-      continue;
-    }
-    if (p.dbar > dbar_t) hi = v; else lo = v;
-    const double lin = (dbar_t - p.dbar) / p.ddbar;  /* plain Newton step */
-    const double step = -(log(d) - Lt) * d / p.ddbar;
-    const double scale = fmin(fabs(vH - v), fabs(v - vb));
-    const double tol_v = fmax(1e-8 * scale, 16.0 * DBL_EPSILON * (fabs(vH) + fabs(dbar_b / p.ddbar)));
-    if (fabs(step) <= tol_v || fabs(hi - lo) <= 4.0 * DBL_EPSILON * fabs(v)) {
-      elliptic_fill(G, &p, lin, s);
-      s->delta = delta;
-      if (hint) set_hint(hint, v + lin, vb, vH, Lt, dtarget, p.ddbar);
-      return DC_OK;
-    }
-    /* the step is taken in u = ln((v - v_b)/(v_H - v)), in which ln d is
-       close to linear at both ends (slope 2 at the separation point, 4/3
-       at the Hertz end), so Newton's quadratic error term is small and a
-       warm start usually converges in two evaluations (plain Newton steps
-       in v, even within a few per cent of the root, need three); to first
-       order this is the step above */
-    const double r = (v - vb) / (vH - v);
-    const double du = step * (vH - vb) / ((v - vb) * (vH - v));
-    const double rn = r * exp(du);
-    double vn = (vb + vH * rn) / (1.0 + rn);
-    if (!((vn - lo) * (vn - hi) < 0.0)) vn = 0.5 * (lo + hi);
-    v = vn;
-  }
-  jg_eval(G, v, &p);
-  elliptic_fill(G, &p, (dbar_t - p.dbar) / p.ddbar, s);
-  s->delta = delta;
-  if (hint) { hint->v = v; hint->dudL = 0.0; }
-  return DC_ENOCONV;
 }

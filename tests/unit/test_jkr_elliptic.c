@@ -1,5 +1,6 @@
-/* Unit tests of c_core/src/jkr_elliptic.c against the committed mpmath
-   tables (tests/reference/gen_jkr_elliptic.py solves the contact problem
+/* Unit tests of the JKR laws (c_core/src/jkr_sphere.c, jkr_elliptic.c,
+   jkr_elliptic_solve.c) against the committed mpmath tables
+   (tests/reference/gen_jkr_elliptic.py solves the contact problem
    independently, from the potential integrals of the pressure), the exact
    circular and Hertz limits, and the shape of the force-overlap curve. */
 #include "check.h"

@@ -63,6 +63,7 @@
 #define DC_JKR_ELLIPTIC_H
 
 #include "dc/hertz_elliptic.h"
+#include "dc/jkr_sphere.h"   /* dc_jkr_state and classical JKR, dc_jkr_sphere* */
 
 #ifdef __cplusplus
 extern "C" {
@@ -101,34 +102,6 @@ typedef struct {
   int use_m1;                    /* solver variable: 1 - e^2 (slender) or e^2 */
   double v_hertz, v_break;       /* e2_hertz, e2_break in that variable      */
 } dc_jkr_geom;
-
-/* One contact state. */
-typedef struct {
-  int contact;   /* 1 in contact; 0: delta below delta_break, all zero     */
-  double F;      /* normal force [N], > 0 repulsive, < 0 adhesive           */
-  double delta;  /* overlap [m]                                              */
-  double a, b;   /* semi-axes of the contact ellipse [m], a >= b            */
-  double area;   /* pi a b [m^2]                                             */
-  double e2;     /* e^2 = 1 - (b/a)^2                                        */
-  double kn;     /* dF/d delta on the stable branch [N/m]; grows without
-                    bound at delta_break, returned finite (<= 1e300)        */
-} dc_jkr_state;
-
-/* Classical JKR for spheres (Johnson, Kendall & Roberts 1971; review
-   Sec. 2.2 circular limit): the quartic in a^1/2 is solved from a rational
-   starting value by two Halley steps (no transcendental call, one cube
-   root for the length scale). Stable (large-contact) branch.
-   Domain: R > 0, Estar > 0, w >= 0, delta finite. w = 0 is Hertz. delta <
-   delta_break gives contact = 0 and a zero state (DC_OK). */
-int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s);
-
-/* Classical JKR state for a given contact radius a > 0 (either branch). */
-int dc_jkr_sphere_at_radius(double R, double Estar, double w, double a, dc_jkr_state *s);
-
-/* Pull-off force 3/2 pi w R (load control) and separation overlap
-   delta_break = -3/4 (pi^2 w^2 R / Estar^2)^1/3 (overlap control). */
-double dc_jkr_sphere_pulloff(double R, double w);
-double dc_jkr_sphere_delta_break(double R, double Estar, double w);
 
 /* Geometry of an elliptic adhesive contact from the two relative principal
    radii (either order), Estar and w. Finds the Hertz eccentricity, the
