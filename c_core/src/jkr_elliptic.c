@@ -8,6 +8,7 @@
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
+#include "dc/contract.h"
 #include "jkr_cbrt.h"
 #include "jkr_extrema_guess.h"
 #include "jkr_private.h"
@@ -353,4 +354,13 @@ int dc_jkr_at_eccentricity(const dc_jkr_geom *G, double e2, dc_jkr_state *s)
   dc_jkr_elliptic_fill_(G, &p, 0.0, s);
   if (sg * p.ddbar <= 0.0) s->kn = dc_jkr_finite_kn_(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
   return DC_OK;
+}
+
+const dc_history_field dc_jkr_history[DC_JKR_HISTORY_NFIELDS] = {
+  {"jkr_contact", 0}, {"jkr_hint_v", 0}, {"jkr_hint_L", 0}, {"jkr_hint_s", 0},
+};
+
+int dc_jkr_check(double w, dc_param_error *err)
+{
+  return dc_param_check("workOfAdhesion", w, 0.0, 0, HUGE_VAL, 1, "[0, inf) J/m^2", err);
 }

@@ -63,6 +63,7 @@
 #define DC_JKR_ELLIPTIC_H
 
 #include "dc/hertz_elliptic.h"
+#include "dc/contract.h"
 #include "dc/jkr_sphere.h"   /* dc_jkr_state and classical JKR, dc_jkr_sphere* */
 
 #ifdef __cplusplus
@@ -141,6 +142,21 @@ int dc_jkr_contact(const dc_jkr_geom *g, double delta, dc_jkr_hint *hint, dc_jkr
 /* Contact hysteresis: a new contact forms when delta >= 0; an existing one
    persists while delta >= delta_break (< 0 for w > 0). Returns 1 or 0. */
 int dc_jkr_in_contact(const dc_jkr_geom *g, int was_in_contact, double delta);
+
+/* The law contract (dc/contract.h). Per-contact history: the formed flag
+   (jkr_contact), then a dc_jkr_hint (elliptic contacts only); no field
+   changes sign when i and j swap. */
+enum { DC_JKR_HISTORY_NFIELDS = 4 };
+extern const dc_history_field dc_jkr_history[DC_JKR_HISTORY_NFIELDS];
+
+/* Parameter check: workOfAdhesion w >= 0 and finite [J/m^2]. */
+int dc_jkr_check(double w, dc_param_error *err);
+
+/* Normal force that bounds friction, |F_t| <= mu (F + 2 F_pulloff), with
+   F_pulloff > 0 the load-controlled pull-off force (Thornton & Yin 1991;
+   LAMMPS GRANULAR's jkr does the same): >= F_pulloff > 0 on the stable
+   branch, so friction acts while the neck is in tension. */
+static inline double dc_jkr_friction_load(double F, double F_pulloff) { return F + 2.0 * F_pulloff; }
 
 #ifdef __cplusplus
 }
