@@ -13,6 +13,8 @@
 #include <math.h>
 #include <stdio.h>
 
+#define COLUMNS "delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted"
+
 int cmd_gw_rough(int argc, char **argv)
 {
   dc_cli_option o[] = {
@@ -24,14 +26,16 @@ int cmd_gw_rough(int argc, char **argv)
     {"mu", "Feng roughness parameter mu = 8/3 sigma N sqrt(2 R beta), in [1, 50]", 4, 0},
     {"delta_min", "first overlap [m] (negative: separated)", -3e-6, 0},
     {"delta_max", "last overlap [m]", 1e-5, 0},
-    {"n", "number of overlaps", 14, 0},
+    {"n", DC_CLI_N_HELP, 14, 0},
     {"w", "work of adhesion [J/m^2]; > 0 adds the adhesive (JKR summit) GW force, loading and unloading", 0, 0},
     {0, 0, 0, 0}};
   int st = dc_cli_parse(argc, argv, o, "--R1 R --R2 R --Estar E --sigma s --n_asp N --mu mu --delta_min d --delta_max d --n N [--w w]");
   if (st) return st == 1 ? 0 : st;
+  int n;
+  if (dc_cli_count(argv[0], o, "n", &n)) return 2;
   dc_hertz_geom g;
   if (dc_hertz_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), &g)) {
-    fprintf(stderr, "dclaw gw_rough: R1, R2: need radii > 0 with ratio >= %g\n", DC_HERTZ_RATIO_MIN);
+    fprintf(stderr, "dclaw gw_rough: --R1, --R2: need radii > 0 with ratio >= %g\n", DC_HERTZ_RATIO_MIN);
     return 2;
   }
   dc_feng_law Lt, Lf;
@@ -39,8 +43,6 @@ int cmd_gw_rough(int argc, char **argv)
     fprintf(stderr, "dclaw gw_rough: --mu must lie in [%g, %g]\n", DC_FENG_MU_MIN, DC_FENG_MU_MAX);
     return 2;
   }
-  const int n = (int)dc_cli_get(o, "n");
-  if (n < 1) { fprintf(stderr, "dclaw gw_rough: --n must be >= 1\n"); return 2; }
   const double E = dc_cli_get(o, "Estar"), s = dc_cli_get(o, "sigma"), N = dc_cli_get(o, "n_asp");
   const double d0 = dc_cli_get(o, "delta_min"), d1 = dc_cli_get(o, "delta_max");
   /* Feng's law is for spheres: use the radius of the Hertz force, Rc gamma^2 */
@@ -48,28 +50,27 @@ int cmd_gw_rough(int argc, char **argv)
   const double w = dc_cli_get(o, "w");
   dc_jkr_geom jg;
   if (!(w >= 0) || (w > 0 && dc_jkr_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), E, w, &jg))) {
-    fprintf(stderr, "dclaw gw_rough: --w, R1, R2, Estar: need w >= 0 finite, ratio >= %g, Estar > 0\n", DC_JKR_RATIO_MIN);
+    fprintf(stderr, "dclaw gw_rough: --w, --R1, --R2, --Estar: need w >= 0, ratio >= %g, Estar > 0\n", DC_JKR_RATIO_MIN);
     return 2;
   }
-  printf("delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted%s\n",
-         w > 0 ? ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading" : "");
+  const char *cols = w > 0 ? COLUMNS ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading"
+                           : COLUMNS;
+  printf("%s\n", cols);
   for (int i = 0; i < n; i++) {
-    const double d = n == 1 ? d0 : d0 + (d1 - d0) * i / (n - 1);
+    const double d = dc_cli_range(d0, d1, i, n);
     dc_gw_rough_state rs;
+    dc_gw_adhesive_state al = {0}, au = {0};
     double pt, kt, pf, kf;
-    if (dc_gw_rough_elliptic(&g, E, N, s, d, &rs) || dc_feng_force(&Lt, E, R, s, d, &pt, &kt) ||
-        dc_feng_force(&Lf, E, R, s, d, &pf, &kf)) {
-      fprintf(stderr, "dclaw gw_rough: Estar, sigma, n_asp: need Estar > 0, sigma >= 0, n_asp > 0\n");
+    if ((st = dc_gw_rough_elliptic(&g, E, N, s, d, &rs)) || (st = dc_feng_force(&Lt, E, R, s, d, &pt, &kt)) ||
+        (st = dc_feng_force(&Lf, E, R, s, d, &pf, &kf)) ||
+        (w > 0 && ((st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_LOADING, &al)) ||
+                   (st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_UNLOADING, &au))))) {
+      fprintf(stderr, "dclaw gw_rough: --Estar, --sigma, --n_asp: %s at delta %g (need Estar > 0, sigma >= 0, n_asp > 0)\n",
+              dc_status_str(st), d);
       return 2;
     }
-    printf("%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g", d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf);
-    if (w > 0) {
-      dc_gw_adhesive_state al, au;
-      dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_LOADING, &al);
-      dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_UNLOADING, &au);
-      printf(",%.17g,%.17g,%.17g,%.17g", al.F, al.area, au.F, au.area);
-    }
-    printf("\n");
+    const double v[] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, al.F, al.area, au.F, au.area};
+    if (dc_cli_row("gw_rough", o, cols, w > 0 ? 13 : 9, v)) return 2;
   }
   return 0;
 }
