@@ -7,6 +7,7 @@
 #include "dc/jkr_elliptic.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
+#include "dc/root_find.h"
 #include "dc/status.h"
 #include "dc/contract.h"
 #include "jkr_cbrt.h"
@@ -122,44 +123,34 @@ static double deriv_of(const dc_jkr_geom *G, double v, int which, jg_point *p)
   return which ? p->dPbar : p->ddbar;
 }
 
-/* Brent's zero finder (zeroin) on that derivative over [a, b] with a sign
-   change (fa < 0 < fb given, *pa_in and *pb the points at a and b); the
-   root's point is returned in *pb. */
-static int brent_deriv(const dc_jkr_geom *G, int which, double a, double b, double fa, double fb,
-                       const jg_point *pa_in, jg_point *pb, double *root)
+/* The extremum searches: dc_root_brent_ends on that derivative, the
+   points kept in the finder's three slots (so the root's point needs no
+   evaluation of its own). */
+typedef struct {
+  const dc_jkr_geom *G;
+  int which;
+  jg_point pt[3];
+} ext_search;
+
+static double ext_deriv(double v, void *ctx, int slot)
+{
+  ext_search *e = ctx;
+  return deriv_of(e->G, v, e->which, &e->pt[slot]);
+}
+
+/* The zero of the derivative over [a, b] with fa < 0 < fb (a minimum; the
+   points at a and b in slots 0 and 1), to 1e-12 relative in v: the
+   extremal values (delta_break, F_pull) are then exact to rounding (second
+   order), e2_break and e2_pull to ~1e-12. Its point in *p. Any failure,
+   the lack of a sign change included, is DC_ENOCONV (the search failed). */
+static int ext_root(ext_search *e, double a, double b, double fa, double fb, double *root, jg_point *p)
 {
   if (!(fa < 0.0 && fb > 0.0)) return DC_ENOCONV;
-  double c = a, fc = fa, d = b - a, e = d;
-  jg_point pa = *pa_in, pc = pa;
-  for (int it = 0; it < 200; it++) {
-    if ((fb > 0.0) == (fc > 0.0)) { c = a; fc = fa; pc = pa; d = e = b - a; }
-    if (fabs(fc) < fabs(fb)) {
-      a = b; b = c; c = a; fa = fb; fb = fc; fc = fa;
-      pa = *pb; *pb = pc; pc = pa;
-    }
-    /* 1e-12 relative in v: the extremal values (delta_break, F_pull) are
-       then exact to rounding (second order), e2_break and e2_pull to ~1e-12 */
-    const double tol = 1e-12 * fabs(b) + 1e-300;
-    const double xm = 0.5 * (c - b);
-    if (fabs(xm) <= tol || fb == 0.0) { *root = b; return DC_OK; }
-    if (fabs(e) >= tol && fabs(fa) > fabs(fb)) {
-      double s = fb / fa, pp, q;
-      if (a == c) { pp = 2.0 * xm * s; q = 1.0 - s; }
-      else {
-        const double qq = fa / fc, r = fb / fc;
-        pp = s * (2.0 * xm * qq * (qq - r) - (b - a) * (r - 1.0));
-        q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
-      }
-      if (pp > 0.0) q = -q; else pp = -pp;
-      if (2.0 * pp < fmin(3.0 * xm * q - fabs(tol * q), fabs(e * q))) { e = d; d = pp / q; }
-      else { d = xm; e = d; }
-    } else { d = xm; e = d; }
-    a = b; fa = fb; pa = *pb;
-    b += fabs(d) > tol ? d : (xm > 0.0 ? tol : -tol);
-    fb = deriv_of(G, b, which, pb);
-  }
-  *root = b;
-  return DC_ENOCONV;
+  dc_root_result r;
+  if (dc_root_brent_ends(ext_deriv, e, a, b, fa, fb, 1e-12, 1e-300, 200, &r) != DC_OK) return DC_ENOCONV;
+  *root = r.x;
+  *p = e->pt[r.slot];
+  return DC_OK;
 }
 
 /* Bracket [lo, hi] around the guess of extremum `which` (0: separation,
@@ -194,19 +185,21 @@ static void ext_bracket(const dc_jkr_geom *G, int which, double hw, double vmin,
 static int find_extremum(const dc_jkr_geom *G, int which, double vmin, double vmax, double *root,
                          jg_point *p)
 {
-  jg_point plo;
+  ext_search e;
+  e.G = G;
+  e.which = which;
   for (double hw = 4e-6; hw < 1.0; hw *= 8.0) {
     double lo, hi;
     ext_bracket(G, which, hw, vmin, vmax, &lo, &hi);
     if (!(lo < hi)) continue;
-    const double flo = deriv_of(G, lo, which, &plo);
+    const double flo = deriv_of(G, lo, which, &e.pt[0]);
     if (!(flo < 0.0)) continue;
-    const double fhi = deriv_of(G, hi, which, p);
-    if (fhi > 0.0) return brent_deriv(G, which, lo, hi, flo, fhi, &plo, p, root);
+    const double fhi = deriv_of(G, hi, which, &e.pt[1]);
+    if (fhi > 0.0) return ext_root(&e, lo, hi, flo, fhi, root, p);
   }
-  const double flo = deriv_of(G, vmin, which, &plo);
-  const double fhi = deriv_of(G, vmax, which, p);
-  return brent_deriv(G, which, vmin, vmax, flo, fhi, &plo, p, root);
+  const double flo = deriv_of(G, vmin, which, &e.pt[0]);
+  const double fhi = deriv_of(G, vmax, which, &e.pt[1]);
+  return ext_root(&e, vmin, vmax, flo, fhi, root, p);
 }
 
 int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G)
