@@ -8,6 +8,12 @@ typedef struct {
   const char *summary;
 } dc_cli_command;
 
+/* Defines subcommand law's entry; cli/cmd_<law>.c must hold exactly one, and
+   the build lists it in dclaw's table (generated dclaw_commands.h). */
+#define DC_CLI_COMMAND(law, run, summary) \
+  extern const dc_cli_command dc_cli_cmd_##law; \
+  const dc_cli_command dc_cli_cmd_##law = {#law, run, summary}
+
 /* Key-value options: --key value. Unknown keys are an error. */
 typedef struct {
   const char *key;     /* without the leading -- */
@@ -44,9 +50,5 @@ double dc_cli_range(double d0, double d1, int i, int n);
    CSV header) and the keys behind it (given keys with extreme values, else
    all given keys), and returns 2. */
 int dc_cli_row(const char *law, const dc_cli_option *opts, const char *columns, int n, const double *v);
-
-int cmd_hertz_elliptic(int argc, char **argv);
-int cmd_jkr_elliptic(int argc, char **argv);
-int cmd_gw_rough(int argc, char **argv);
 
 #endif

@@ -15,7 +15,8 @@
 
 #define COLUMNS "delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted"
 
-int cmd_gw_rough(int argc, char **argv)
+/* Runs the subcommand; argv[0] is the law name. */
+static int cmd_gw_rough(int argc, char **argv)
 {
   dc_cli_option o[] = {
     {"R1", "relative principal radius 1 [m]", 1e-3, 0},
@@ -74,3 +75,6 @@ int cmd_gw_rough(int argc, char **argv)
   }
   return 0;
 }
+
+DC_CLI_COMMAND(gw_rough, cmd_gw_rough,
+               "GW rough contact: radii, E*, sigma, n_asp, mu, overlaps -> elliptic closed-form and Feng-law force, area, stiffness");

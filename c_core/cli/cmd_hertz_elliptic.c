@@ -6,7 +6,8 @@
 #include "dc/status.h"
 #include <stdio.h>
 
-int cmd_hertz_elliptic(int argc, char **argv)
+/* Runs the subcommand; argv[0] is the law name. */
+static int cmd_hertz_elliptic(int argc, char **argv)
 {
   dc_cli_option o[] = {
     {"R1", "relative principal radius 1 [m]", 0, 0},
@@ -61,3 +62,6 @@ int cmd_hertz_elliptic(int argc, char **argv)
   }
   return 0;
 }
+
+DC_CLI_COMMAND(hertz_elliptic, cmd_hertz_elliptic,
+               "elliptic Hertz: radii or curvatures, E*, overlaps -> e^2, gamma, beta, semi-axes, force, area, stiffness");

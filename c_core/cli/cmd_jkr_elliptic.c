@@ -7,7 +7,8 @@
 #include "dc/status.h"
 #include <stdio.h>
 
-int cmd_jkr_elliptic(int argc, char **argv)
+/* Runs the subcommand; argv[0] is the law name. */
+static int cmd_jkr_elliptic(int argc, char **argv)
 {
   dc_cli_option o[] = {
     {"R1", "relative principal radius 1 [m]", 1e-3, 0},
@@ -58,3 +59,6 @@ int cmd_jkr_elliptic(int argc, char **argv)
   }
   return 0;
 }
+
+DC_CLI_COMMAND(jkr_elliptic, cmd_jkr_elliptic,
+               "adhesive elliptic JKR (Johnson-Greenwood; classical JKR for R1 = R2): overlaps -> force, area, semi-axes; --summary 1: pull-off force, separation overlap");
