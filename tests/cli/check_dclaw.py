@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Checks the dclaw command-line tool (path in argv[1]); needs no LIGGGHTS.
+
+Inputs that made dclaw print inf or nan with exit 0, and option values that
+are not numbers or not valid counts, must exit 2 with a message naming the
+key; good inputs must exit 0 with finite CSV; spherical Hertz and JKR rows
+must match the closed forms computed here."""
+import math
+import shlex
+import subprocess
+import sys
+
+EXE = sys.argv[1]
+counts = {"passed": 0, "failed": 0}
+
+
+def check(ok, what):
+    """Counts one check and prints it if it failed."""
+    counts["passed" if ok else "failed"] += 1
+    if not ok:
+        print("FAIL:", what)
+
+
+def run(args):
+    """Runs dclaw with args; returns (exit code, stdout, stderr)."""
+    p = subprocess.run([EXE] + args, capture_output=True, text=True, timeout=120)
+    return p.returncode, p.stdout, p.stderr
+
+
+def csv(out):
+    """Header names and rows of floats of dclaw's CSV output."""
+    lines = out.strip().splitlines()
+    return lines[0].split(","), [[float(x) for x in l.split(",")] for l in lines[1:]]
+
+
+# Inputs that printed inf or nan with exit 0 before, and the keys the error must name.
+NON_FINITE = [
+    ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta 1e300", ["delta"]),
+    ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta 1e-6 --delta_max 1e300", ["delta_max"]),
+    ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta_min 1e300 --delta_max 1e-5 --n 3", ["delta_min"]),
+    ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta_min 0 --delta_max 1e300 --n 3", ["delta_max"]),
+    ("hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e300", ["delta"]),
+    ("hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e-6 --delta_max 1e300", ["delta_max"]),
+    ("hertz_elliptic --R1 1e300 --R2 1e300 --delta 1e-6", ["R1", "R2"]),
+    ("gw_rough --n 3 --sigma 1e-320", ["sigma"]),
+    ("gw_rough --n 3 --sigma 1e300", ["sigma"]),
+    ("gw_rough --n 3 --n_asp 1e300", ["n_asp"]),
+    ("gw_rough --n 3 --delta_min 1e300", ["delta_min"]),
+    ("gw_rough --n 3 --delta_max 1e300", ["delta_max"]),
+    ("gw_rough --n 3 --w 0.05 --Estar 1e-320", ["Estar"]),
+    ("gw_rough --n 3 --w 0.05 --sigma 1e-320", ["sigma"]),
+    ("gw_rough --n 3 --w 0.05 --sigma 1e300", ["sigma"]),
+    ("gw_rough --n 3 --w 0.05 --n_asp 1e300", ["n_asp"]),
+    ("gw_rough --n 3 --w 0.05 --delta_min 1e300", ["delta_min"]),
+    ("gw_rough --n 3 --w 0.05 --delta_max 1e300", ["delta_max"]),
+    ("gw_rough --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
+    ("gw_rough --n 3 --Estar 1e-320 --w 1e300", ["Estar", "w"]),
+    ("jkr_elliptic --n 3 --delta_min 1e300", ["delta_min"]),
+    ("jkr_elliptic --n 3 --delta_max 1e300", ["delta_max"]),
+    ("jkr_elliptic --summary 1 --Estar 1e-320", ["Estar"]),
+    ("jkr_elliptic --summary 1 --w 1e300", ["w"]),
+    ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_min 1e300", ["delta_min"]),
+    ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_max 1e300", ["delta_max"]),
+    ("jkr_elliptic --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
+    ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --Estar 1e300 --w 1e300", ["Estar", "w"]),
+]
+
+# Option values that are not (finite) numbers or not valid counts.
+BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
+    ("hertz_elliptic", "R1", "--R1 abc"), ("hertz_elliptic", "R1", "--R1 1x"),
+    ("hertz_elliptic", "R1", "--R1 ''"), ("hertz_elliptic", "R1", "--R2 1 --R1"),
+    ("hertz_elliptic", "R1", "--R1 inf"), ("hertz_elliptic", "R1", "--R1 nan"),
+    ("gw_rough", "sigma", "--sigma ''"), ("gw_rough", "sigma", "--sigma ' '"),
+    ("jkr_elliptic", "w", "--w 0.05x"), ("jkr_elliptic", "w", "--w"),
+    ("hertz_elliptic", "n", "--R1 1e-3 --R2 1e-3 --delta_max 1e-6 --n 0"),
+    ("gw_rough", "n", "--n -3"), ("gw_rough", "n", "--n 2.5"), ("gw_rough", "n", "--n 1000001"),
+    ("jkr_elliptic", "n", "--n 1e300"), ("jkr_elliptic", "n", "--n abc"), ("jkr_elliptic", "n", "--n ''"),
+    ("gw_rough", "nope", "--nope 1"),
+]]
+
+for args, keys in NON_FINITE + BAD_VALUES:
+    rc, out, err = run(shlex.split(args))
+    unnamed = [k for k in keys if "--" + k not in err]
+    check(rc == 2 and not unnamed, "%s: exit %d (want 2), stderr %r, keys not named %s" % (args, rc, err.strip(), unnamed))
+    check("inf" not in out.lower() and "nan" not in out.lower(), "%s printed %r" % (args, out))
+
+# Good inputs: exit 0, every value finite, as many values as columns.
+GOOD = [
+    "hertz_elliptic --R1 0.002 --R2 0.0005 --Estar 1e9 --delta_min 0 --delta_max 1e-5 --n 11",
+    "hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e-6",
+    "gw_rough", "gw_rough --w 0.05 --n 5", "jkr_elliptic", "jkr_elliptic --R1 0.002 --R2 0.0005 --n 1",
+    "jkr_elliptic --summary 1 --n 1000000", "gw_rough --n 1e1",
+]
+for args in GOOD:
+    rc, out, err = run(args.split())
+    ok = rc == 0
+    if ok:
+        head, rows = csv(out)
+        ok = rows and all(len(r) == len(head) and all(map(math.isfinite, r)) for r in rows)
+    check(ok, "%s: exit %d, stderr %r, output %r" % (args, rc, err, out[:300]))
+
+# dclaw --help lists the laws sorted by name; each law has --help.
+rc, out, _ = run(["--help"])
+laws = [l.split()[0] for l in out.splitlines()[2:]]
+check(rc == 0 and laws == sorted(laws) and {"gw_rough", "hertz_elliptic", "jkr_elliptic"} <= set(laws),
+      "dclaw --help: exit %d, laws %s" % (rc, laws))
+for law in laws:
+    rc, out, _ = run([law, "--help"])
+    check(rc == 0 and out.startswith("usage: dclaw " + law) and "1000000" in out, "dclaw %s --help" % law)
+
+# Spheres (relative radii R1 = R2 = R): Hertz F = 4/3 E* R^1/2 delta^3/2,
+# area pi R delta, stiffness 2 E* (R delta)^1/2; JKR pull-off 3/2 pi w R and
+# separation overlap -3/4 (pi^2 w^2 R / E*^2)^1/3.
+R, E, d, w = 1.5e-3, 2e9, 3e-6, 0.07
+rc, out, _ = run(["hertz_elliptic", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(E), "--delta", repr(d)])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+for col, want in [("force", 4 / 3 * E * math.sqrt(R) * d ** 1.5), ("area", math.pi * R * d),
+                  ("stiffness", 2 * E * math.sqrt(R * d))]:
+    check(rc == 0 and abs(got[col] / want - 1) < 1e-12, "sphere Hertz %s %r, want %r" % (col, got[col], want))
+rc, out, _ = run(["jkr_elliptic", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(E), "--w", repr(w), "--summary", "1"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+for col, want in [("pulloff_force", 1.5 * math.pi * w * R),
+                  ("delta_break", -0.75 * (math.pi ** 2 * w ** 2 * R / E ** 2) ** (1 / 3))]:
+    check(rc == 0 and abs(got[col] / want - 1) < 1e-12, "sphere JKR %s %r, want %r" % (col, got[col], want))
+
+print("%d passed, %d failed" % (counts["passed"], counts["failed"]))
+sys.exit(1 if counts["failed"] else 0)
