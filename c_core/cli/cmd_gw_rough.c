@@ -35,8 +35,8 @@ static int cmd_gw_rough(int argc, char **argv)
   int n;
   if (dc_cli_count(argv[0], o, "n", &n)) return 2;
   dc_hertz_geom g;
-  if (dc_hertz_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), &g)) {
-    fprintf(stderr, "dclaw gw_rough: --R1, --R2: need radii > 0 with ratio >= %g\n", DC_HERTZ_RATIO_MIN);
+  if ((st = dc_hertz_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), &g))) {
+    fprintf(stderr, "dclaw gw_rough: --R1, --R2: %s (need radii > 0 with ratio >= %g)\n", dc_status_str(st), DC_HERTZ_RATIO_MIN);
     return 2;
   }
   dc_feng_law Lt, Lf;
@@ -50,8 +50,9 @@ static int cmd_gw_rough(int argc, char **argv)
   const double R = g.R_force;
   const double w = dc_cli_get(o, "w");
   dc_jkr_geom jg;
-  if (!(w >= 0) || (w > 0 && dc_jkr_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), E, w, &jg))) {
-    fprintf(stderr, "dclaw gw_rough: --w, --R1, --R2, --Estar: need w >= 0, ratio >= %g, Estar > 0\n", DC_JKR_RATIO_MIN);
+  if (!(w >= 0) || (w > 0 && (st = dc_jkr_geometry(dc_cli_get(o, "R1"), dc_cli_get(o, "R2"), E, w, &jg)))) {
+    fprintf(stderr, "dclaw gw_rough: --w, --R1, --R2, --Estar: %s (need w >= 0, ratio >= %g, Estar > 0)\n",
+            dc_status_str(w >= 0 ? st : DC_EDOM), DC_JKR_RATIO_MIN);
     return 2;
   }
   const char *cols = w > 0 ? COLUMNS ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading"
@@ -66,8 +67,8 @@ static int cmd_gw_rough(int argc, char **argv)
         (st = dc_feng_force(&Lf, E, R, s, d, &pf, &kf)) ||
         (w > 0 && ((st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_LOADING, &al)) ||
                    (st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_UNLOADING, &au))))) {
-      fprintf(stderr, "dclaw gw_rough: --Estar, --sigma, --n_asp: %s at delta %g (need Estar > 0, sigma >= 0, n_asp > 0)\n",
-              dc_status_str(st), d);
+      fprintf(stderr, "dclaw gw_rough: --Estar, --sigma, --n_asp, --delta_min, --delta_max%s: %s at delta %g (need Estar > 0, sigma >= 0, n_asp > 0)\n",
+              w > 0 ? ", --w" : "", dc_status_str(st), d);
       return 2;
     }
     const double v[] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, al.F, al.area, au.F, au.area};
