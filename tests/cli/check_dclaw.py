@@ -33,7 +33,8 @@ def csv(out):
     return lines[0].split(","), [[float(x) for x in l.split(",")] for l in lines[1:]]
 
 
-# Inputs that printed inf or nan with exit 0 before, and the keys the error must name.
+# Inputs that printed inf or nan with exit 0, and the keys the error must
+# name. A value printed here is truly beyond the doubles (e.g. a force ~1e450).
 NON_FINITE = [
     ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta 1e300", ["delta"]),
     ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta 1e-6 --delta_max 1e300", ["delta_max"]),
@@ -41,27 +42,32 @@ NON_FINITE = [
     ("hertz_elliptic --R1 0.002 --R2 0.0005 --delta_min 0 --delta_max 1e300 --n 3", ["delta_max"]),
     ("hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e300", ["delta"]),
     ("hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e-6 --delta_max 1e300", ["delta_max"]),
-    ("hertz_elliptic --R1 1e300 --R2 1e300 --delta 1e-6", ["R1", "R2"]),
-    ("gw_rough --n 3 --sigma 1e-320", ["sigma"]),
     ("gw_rough --n 3 --sigma 1e300", ["sigma"]),
-    ("gw_rough --n 3 --n_asp 1e300", ["n_asp"]),
     ("gw_rough --n 3 --delta_min 1e300", ["delta_min"]),
     ("gw_rough --n 3 --delta_max 1e300", ["delta_max"]),
-    ("gw_rough --n 3 --w 0.05 --Estar 1e-320", ["Estar"]),
-    ("gw_rough --n 3 --w 0.05 --sigma 1e-320", ["sigma"]),
     ("gw_rough --n 3 --w 0.05 --sigma 1e300", ["sigma"]),
-    ("gw_rough --n 3 --w 0.05 --n_asp 1e300", ["n_asp"]),
     ("gw_rough --n 3 --w 0.05 --delta_min 1e300", ["delta_min"]),
     ("gw_rough --n 3 --w 0.05 --delta_max 1e300", ["delta_max"]),
-    ("gw_rough --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
-    ("gw_rough --n 3 --Estar 1e-320 --w 1e300", ["Estar", "w"]),
     ("jkr_elliptic --n 3 --delta_min 1e300", ["delta_min"]),
     ("jkr_elliptic --n 3 --delta_max 1e300", ["delta_max"]),
-    ("jkr_elliptic --summary 1 --Estar 1e-320", ["Estar"]),
-    ("jkr_elliptic --summary 1 --w 1e300", ["w"]),
     ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_min 1e300", ["delta_min"]),
     ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_max 1e300", ["delta_max"]),
     ("jkr_elliptic --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
+]
+# Inputs that printed inf or nan with exit 0 from an overflow inside c_core
+# although the results have finite limits (sigma -> 0 is smooth Hertz): an
+# error naming the keys, or (once c_core computes them) finite values.
+NON_FINITE_OR_FIXED = [
+    ("hertz_elliptic --R1 1e300 --R2 1e300 --delta 1e-6", ["R1", "R2"]),
+    ("gw_rough --n 3 --n_asp 1e300", ["n_asp"]),
+    ("gw_rough --n 3 --w 0.05 --n_asp 1e300", ["n_asp"]),
+    ("gw_rough --n 3 --w 0.05 --Estar 1e-320", ["Estar"]),
+    ("gw_rough --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
+    ("gw_rough --n 3 --Estar 1e-320 --w 1e300", ["Estar", "w"]),
+    ("gw_rough --n 3 --sigma 1e-320", ["sigma"]),
+    ("gw_rough --n 3 --w 0.05 --sigma 1e-320", ["sigma"]),
+    ("jkr_elliptic --summary 1 --Estar 1e-320", ["Estar"]),
+    ("jkr_elliptic --summary 1 --w 1e300", ["w"]),
     ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --Estar 1e300 --w 1e300", ["Estar", "w"]),
 ]
 
@@ -78,10 +84,20 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("gw_rough", "nope", "--nope 1"),
 ]]
 
-for args, keys in NON_FINITE + BAD_VALUES:
+
+
+def finite_csv(out):
+    """Whether out is CSV with at least one row, all values finite, one per column."""
+    head, rows = csv(out)
+    return bool(rows) and all(len(r) == len(head) and all(map(math.isfinite, r)) for r in rows)
+
+
+for args, keys in NON_FINITE + NON_FINITE_OR_FIXED + BAD_VALUES:
     rc, out, err = run(shlex.split(args))
     unnamed = [k for k in keys if "--" + k not in err]
-    check(rc == 2 and not unnamed, "%s: exit %d (want 2), stderr %r, keys not named %s" % (args, rc, err.strip(), unnamed))
+    fixed = (args, keys) in NON_FINITE_OR_FIXED and rc == 0 and finite_csv(out)
+    check(fixed or (rc == 2 and not unnamed),
+          "%s: exit %d (want 2), stderr %r, keys not named %s" % (args, rc, err.strip(), unnamed))
     check("inf" not in out.lower() and "nan" not in out.lower(), "%s printed %r" % (args, out))
 
 # Good inputs: exit 0, every value finite, as many values as columns.
@@ -93,11 +109,7 @@ GOOD = [
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
-    ok = rc == 0
-    if ok:
-        head, rows = csv(out)
-        ok = rows and all(len(r) == len(head) and all(map(math.isfinite, r)) for r in rows)
-    check(ok, "%s: exit %d, stderr %r, output %r" % (args, rc, err, out[:300]))
+    check(rc == 0 and finite_csv(out), "%s: exit %d, stderr %r, output %r" % (args, rc, err, out[:300]))
 
 # dclaw --help lists the laws sorted by name; each law has --help.
 rc, out, _ = run(["--help"])
