@@ -3,6 +3,7 @@
 #include "dc/hertz_elliptic.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 
 #include "hertz_eccentricity_cheb.h"
@@ -56,48 +57,93 @@ int dc_hertz_eccentricity(double ratio, double *e2, double *m1)
   return DC_OK;
 }
 
-int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *g)
+int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *out)
 {
   if (!(R1 > 0.0 && R2 > 0.0 && isfinite(R1) && isfinite(R2))) return DC_EDOM;
   const double Rmaj = fmax(R1, R2), Rmin = fmin(R1, R2);
   const double ratio = Rmin / Rmaj;
   if (ratio < DC_HERTZ_RATIO_MIN) return DC_EDOM;
-  g->R_major = Rmaj;
-  g->R_minor = Rmin;
-  g->Rc = Rmaj * Rmin / (Rmaj + Rmin);
+  dc_hertz_geom g;
+  g.R_major = Rmaj;
+  g.R_minor = Rmin;
+  /* Eq. 5; where R_major R_minor would overflow or leave the normal range,
+     the equal R_minor/(1 + ratio), which cannot */
+  const double prod = Rmaj * Rmin;
+  g.Rc = prod >= DBL_MIN && prod <= DBL_MAX ? prod / (Rmaj + Rmin) : Rmin / (1.0 + ratio);
   if (ratio == 1.0) {
-    g->e2 = 0.0; g->m1 = 1.0;
-    g->K = g->E = 0.5 * M_PI; g->D = 0.25 * M_PI;
-    g->gamma = M_SQRT2; g->beta = 2.0;
-    g->R_force = Rmaj;        /* = Rc gamma^2 exactly */
-    g->R_area = Rmaj;         /* = Rc beta exactly */
+    g.e2 = 0.0; g.m1 = 1.0;
+    g.K = g.E = 0.5 * M_PI; g.D = 0.25 * M_PI;
+    g.gamma = M_SQRT2; g.beta = 2.0;
+    g.R_force = Rmaj;        /* = Rc gamma^2 exactly */
+    g.R_area = Rmaj;         /* = Rc beta exactly */
+    *out = g;
     return DC_OK;
   }
   dc_ellint el;
-  eccentricity(ratio, &g->e2, &g->m1);
-  if (ratio >= 0.25) dc_ellint_m(g->e2, &el);
-  else dc_ellint_m1(g->m1, &el);
-  g->K = el.K; g->E = el.E; g->D = el.D;
+  eccentricity(ratio, &g.e2, &g.m1);
+  if (ratio >= 0.25) dc_ellint_m(g.e2, &el);
+  else dc_ellint_m1(g.m1, &el);
+  g.K = el.K; g.E = el.E; g.D = el.D;
   /* with q = 1/(K (1-e^2)^1/2): Eq. 11 squared is gamma^2 = pi^2/2 E/(K^3 (1-e^2))
      = pi^2/2 E q^3 (1-e^2)^1/2, Eq. 12 is beta = 2 E q */
-  const double sm1 = sqrt(g->m1);
+  const double sm1 = sqrt(g.m1);
   const double q = 1.0 / (el.K * sm1);
   const double gamma2 = 0.5 * M_PI * M_PI * el.E * q * q * q * sm1;
-  g->gamma = sqrt(gamma2);                                                   /* Eq. 11 */
-  g->beta = 2.0 * el.E * q;                                                  /* Eq. 12 */
-  g->R_force = g->Rc * gamma2;
-  g->R_area = g->Rc * g->beta;
+  g.gamma = sqrt(gamma2);                                                   /* Eq. 11 */
+  g.beta = 2.0 * el.E * q;                                                  /* Eq. 12 */
+  g.R_force = g.Rc * gamma2;
+  g.R_area = g.Rc * g.beta;
+  if (!(isfinite(g.R_force) && isfinite(g.R_area))) {
+    /* R_force, R_area <= R_major (equal for the circle); near the circle,
+       with R_major within rounding of DBL_MAX, the products above round past
+       it: the same as fractions of R_major, which exceed 1 by rounding only */
+    g.R_force = Rmaj * fmin(1.0, g.Rc / Rmaj * gamma2);
+    g.R_area = Rmaj * fmin(1.0, g.Rc / Rmaj * g.beta);
+  }
+  if (!(isfinite(g.R_force) && isfinite(g.R_area))) return DC_ERANGE;   /* not reached */
+  *out = g;
   return DC_OK;
+}
+
+/* x1 x2 x3 x4 x5 without overflow or underflow before the end: mantissas
+   multiplied, exponents summed, one scaling (rounded as the plain product
+   would be when that stays in range) */
+static double product5(double x1, double x2, double x3, double x4, double x5)
+{
+  const double x[5] = {x1, x2, x3, x4, x5};
+  double m = 1.0;
+  int e = 0;
+  for (int i = 0; i < 5; i++) {
+    int k;
+    m *= frexp(x[i], &k);
+    e += k;
+    m = frexp(m, &k);
+    e += k;
+  }
+  return ldexp(m, e);
 }
 
 int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta, dc_hertz_state *s)
 {
-  if (!(Estar > 0.0 && delta >= 0.0 && isfinite(delta))) return DC_EDOM;
+  if (!(Estar > 0.0 && isfinite(Estar) && delta >= 0.0 && isfinite(delta))) return DC_EDOM;
   const double root = sqrt(g->R_force * delta);
-  s->F = 4.0 / 3.0 * Estar * root * delta;                 /* Eq. 1 */
-  s->kn = 2.0 * Estar * root;
-  s->area = M_PI * g->R_area * delta;                      /* Eq. 2 */
-  s->a = sqrt(2.0 * g->R_major * delta * g->D / g->K);
-  s->b = s->a * sqrt(g->m1);
+  dc_hertz_state h;
+  h.F = 4.0 / 3.0 * Estar * root * delta;                 /* Eq. 1 */
+  h.kn = 2.0 * Estar * root;
+  h.area = M_PI * g->R_area * delta;                      /* Eq. 2 */
+  h.a = sqrt(2.0 * g->R_major * delta * g->D / g->K);
+  h.b = h.a * sqrt(g->m1);
+  if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) {
+    /* an intermediate product overflowed: the same expressions without
+       overflow before the end; DC_ERANGE if a result itself does */
+    const double sR = sqrt(g->R_force), sd = sqrt(delta);
+    h.F = product5(4.0 / 3.0, Estar, sR, sd, delta);
+    h.kn = product5(2.0, Estar, sR, sd, 1.0);
+    h.area = product5(M_PI, g->R_area, delta, 1.0, 1.0);
+    h.a = product5(sqrt(2.0 * g->D / g->K), sqrt(g->R_major), sd, 1.0, 1.0);
+    h.b = h.a * sqrt(g->m1);
+    if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) return DC_ERANGE;
+  }
+  *s = h;
   return DC_OK;
 }

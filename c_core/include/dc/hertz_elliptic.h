@@ -70,11 +70,14 @@ int dc_hertz_eccentricity(double ratio, double *e2, double *m1);
 int dc_hertz_eccentricity_approx(double ratio, double *e2);
 
 /* Geometry factors from the two relative principal radii (either order).
-   Domain: radii > 0 and finite, ratio >= DC_HERTZ_RATIO_MIN. */
+   Domain: radii > 0 and finite, ratio >= DC_HERTZ_RATIO_MIN (else
+   DC_EDOM). Rc, R_force and R_area are at most R_major and are computed
+   without intermediate overflow or underflow over the whole domain. */
 int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *g);
 
 /* Force, area, semi-axes, stiffness at overlap delta >= 0 for effective
-   modulus Estar = 1 / sum (1 - nu^2)/E > 0. */
+   modulus Estar = 1 / sum (1 - nu^2)/E > 0, both finite (else DC_EDOM);
+   DC_ERANGE when a result overflows. g: from dc_hertz_geometry. */
 int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta,
                      dc_hertz_state *s);
 
