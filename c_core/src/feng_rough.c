@@ -2,6 +2,7 @@
    variants, continuity treatment and seed notes in dc/feng_rough.h. */
 #include "dc/feng_rough.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -154,11 +155,15 @@ int dc_feng_init(double mu, int variant, dc_feng_law *law)
 int dc_feng_pair_init(const dc_feng_law *law, double Estar, double sigma, dc_feng_pair *p)
 {
   if (!(Estar > 0 && isfinite(Estar) && sigma > 0 && isfinite(sigma))) return DC_EDOM;
+  const double c = 4.0 / 3.0 * Estar, inv_sigma = 1.0 / sigma, c_sigma = c * sigma * sqrt(sigma);
+  /* the kernel needs these as normal numbers (sigma subnormal: 1/sigma
+     overflows) */
+  if (!(isfinite(c) && isfinite(inv_sigma) && c_sigma >= DBL_MIN && c_sigma <= DBL_MAX)) return DC_ERANGE;
   p->law = *law;
-  p->c = 4.0 / 3.0 * Estar;
+  p->c = c;
   p->sigma = sigma;
-  p->inv_sigma = 1.0 / sigma;
-  p->c_sigma = p->c * sigma * sqrt(sigma);
+  p->inv_sigma = inv_sigma;
+  p->c_sigma = c_sigma;
   return DC_OK;
 }
 
@@ -176,20 +181,69 @@ double dc_feng_pstar_sigma(const dc_feng_law *law, double ap)
   return P;
 }
 
+/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
+   mantissas multiplied, exponents summed, one scaling (rounded as the
+   plain product would be when that stays in range) */
+static double product(int n, const double *x)
+{
+  double m = 1.0;
+  int e = 0;
+  for (int i = 0; i < n; i++) {
+    int k;
+    m *= frexp(x[i], &k);
+    e += k;
+    m = frexp(m, &k);
+    e += k;
+  }
+  return ldexp(m, e);
+}
+
+/* Eq. 75 for finite inputs in the domain with sigma > 0, where the bound
+   pair's constants or the kernel's products leave the range of doubles:
+   the kernel in units of the length L (delta in Case I, sigma otherwise)
+   and of the force c R^1/2 L^3/2, then the scales applied without
+   intermediate overflow. */
+static void feng_force_scaled(const dc_feng_law *law, double Estar, double R, double sigma, double delta,
+                              double *P, double *kn)
+{
+  double L, Pu, knu;
+  if (delta >= sigma) {                      /* Case I at alpha = sigma/delta <= 1 */
+    const dc_feng_pair unit = {*law, 1.0, sigma / delta, 0.0, 1.0};
+    dc_feng_pair_force(&unit, 1.0, 1.0, &Pu, &knu);
+    L = delta;
+  } else {                                   /* Cases II-IV at alpha' = delta/sigma */
+    const dc_feng_pair unit = {*law, 1.0, 1.0, 1.0, 1.0};
+    dc_feng_pair_force(&unit, 1.0, delta / sigma, &Pu, &knu);
+    L = sigma;
+  }
+  const double sR = sqrt(R), sL = sqrt(L);
+  *P = product(6, (const double[]){4.0 / 3.0, Estar, sR, L, sL, Pu});
+  *kn = product(5, (const double[]){4.0 / 3.0, Estar, sR, sL, knu});
+}
+
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
                   double delta, double *P, double *kn)
 {
   if (!(Estar > 0 && isfinite(Estar) && R > 0 && isfinite(R) && sigma >= 0 &&
         isfinite(sigma) && isfinite(delta)))
     return DC_EDOM;
+  double Pv, knv;
   if (sigma == 0.0) {                         /* Hertz */
     const double c = 4.0 / 3.0 * Estar * sqrt(R), sd = delta > 0.0 ? sqrt(delta) : 0.0;
-    *P = c * fmax(delta, 0.0) * sd;
-    *kn = 1.5 * c * sd;
-    return DC_OK;
+    Pv = c * fmax(delta, 0.0) * sd;
+    knv = 1.5 * c * sd;
+    if (!(isfinite(Pv) && isfinite(knv))) {
+      Pv = product(5, (const double[]){4.0 / 3.0, Estar, sqrt(R), fmax(delta, 0.0), sd});
+      knv = product(4, (const double[]){2.0, Estar, sqrt(R), sd});
+    }
+  } else {
+    dc_feng_pair p;
+    Pv = knv = NAN;
+    if (dc_feng_pair_init(law, Estar, sigma, &p) == DC_OK) dc_feng_pair_force(&p, sqrt(R), delta, &Pv, &knv);
+    if (!(isfinite(Pv) && isfinite(knv))) feng_force_scaled(law, Estar, R, sigma, delta, &Pv, &knv);
   }
-  dc_feng_pair p;
-  dc_feng_pair_init(law, Estar, sigma, &p);
-  dc_feng_pair_force(&p, sqrt(R), delta, P, kn);
+  if (!(isfinite(Pv) && isfinite(knv))) return DC_ERANGE;
+  *P = Pv;
+  *kn = knv;
   return DC_OK;
 }

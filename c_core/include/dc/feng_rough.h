@@ -84,11 +84,19 @@ double dc_feng_P1(const dc_feng_law *law, double alpha);
 double dc_feng_pstar_sigma(const dc_feng_law *law, double alpha_p);
 
 /* Force and stiffness dP/d delta for overlap delta (any sign), roughness
-   sigma >= 0, E* > 0, R > 0 (Eq. 75). sigma = 0 is Hertz. */
+   sigma >= 0, E* > 0, R > 0, all finite (Eq. 75; else DC_EDOM). sigma = 0
+   is Hertz. Where the bound pair's constants or the kernel's products would
+   leave the range of doubles (e.g. subnormal sigma), the same law is
+   evaluated with the scales applied last; DC_ERANGE when P or kn itself
+   overflows. */
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
                   double delta, double *P, double *kn);
 
-/* Binds law to E* > 0 and sigma > 0 (DC_EDOM otherwise). */
+/* Binds law to E* > 0 and sigma > 0, both finite (DC_EDOM otherwise).
+   DC_ERANGE when 4/3 E*, 1/sigma or 4/3 E* sigma^3/2 is not a finite
+   normal number (E* near DBL_MAX, sigma subnormal or so small that
+   E* sigma^3/2 underflows): the unchecked kernel would return Inf or NaN
+   there; dc_feng_force covers those inputs. */
 int dc_feng_pair_init(const dc_feng_law *law, double Estar, double sigma, dc_feng_pair *p);
 
 /* Eq. 75: force P and dP/d delta at overlap delta (any sign) for
