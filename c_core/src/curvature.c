@@ -2,6 +2,7 @@
    (review Eqs. 3-10); see dc/curvature.h. */
 #include "dc/curvature.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 
 void dc_tangent_basis(const double n[3], double u[3], double v[3])
@@ -24,41 +25,107 @@ static double dot(const double a[3], const double b[3])
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-int dc_curvature_form(const double grad[3], const double hess[9],
-                      const double u[3], const double v[3], double form[3])
+/* Binary exponent e of the largest |x_i| (max |x_i| = m 2^e, m in [1/2, 1));
+   0 when all are zero. Scaling by 2^-e is exact. */
+static int max_exponent(const double *x, int n)
 {
-  const double g = sqrt(dot(grad, grad));
-  if (!(g > 0.0) || !isfinite(g)) return DC_EDOM;
-  double Hu[3], Hv[3];
-  matvec(hess, u, Hu);
-  matvec(hess, v, Hv);
-  const double inv_g = 1.0 / g;
-  form[0] = dot(u, Hu) * inv_g;
-  form[1] = 0.5 * (dot(u, Hv) + dot(v, Hu)) * inv_g;
-  form[2] = dot(v, Hv) * inv_g;
+  double m = 0.0;
+  for (int i = 0; i < n; i++) m = fmax(m, fabs(x[i]));
+  int e = 0;
+  frexp(m, &e);
+  return e;
+}
+
+static int all_finite(const double *x, int n)
+{
+  for (int i = 0; i < n; i++)
+    if (!isfinite(x[i])) return 0;
+  return 1;
+}
+
+/* The form on scaled copies (H 2^-eH, u 2^-eu, v 2^-ev, grad 2^-eg), where
+   no product leaves the range of doubles, scaled back at the end. */
+static void curvature_form_scaled(const double grad[3], const double hess[9], const double u[3],
+                                  const double v[3], double form[3])
+{
+  const int eg = max_exponent(grad, 3), eH = max_exponent(hess, 9);
+  const int eu = max_exponent(u, 3), ev = max_exponent(v, 3);
+  double gs[3], Hs[9], us[3], vs[3], Hu[3], Hv[3];
+  for (int i = 0; i < 3; i++) {
+    gs[i] = ldexp(grad[i], -eg);
+    us[i] = ldexp(u[i], -eu);
+    vs[i] = ldexp(v[i], -ev);
+  }
+  for (int i = 0; i < 9; i++) Hs[i] = ldexp(hess[i], -eH);
+  matvec(Hs, us, Hu);
+  matvec(Hs, vs, Hv);
+  const double inv_g = 1.0 / sqrt(dot(gs, gs));
+  form[0] = ldexp(dot(us, Hu) * inv_g, eH + 2 * eu - eg);
+  form[1] = ldexp(0.5 * (dot(us, Hv) + dot(vs, Hu)) * inv_g, eH + eu + ev - eg);
+  form[2] = ldexp(dot(vs, Hv) * inv_g, eH + 2 * ev - eg);
+}
+
+int dc_curvature_form(const double grad[3], const double hess[9],
+                      const double u[3], const double v[3], double out[3])
+{
+  if (!(all_finite(grad, 3) && all_finite(hess, 9) && all_finite(u, 3) && all_finite(v, 3))) return DC_EDOM;
+  if (grad[0] == 0.0 && grad[1] == 0.0 && grad[2] == 0.0) return DC_EDOM;
+  const double g2 = dot(grad, grad);
+  double form[3];
+  if (g2 >= DBL_MIN && g2 <= DBL_MAX) {
+    const double g = sqrt(g2);
+    double Hu[3], Hv[3];
+    matvec(hess, u, Hu);
+    matvec(hess, v, Hv);
+    const double inv_g = 1.0 / g;
+    form[0] = dot(u, Hu) * inv_g;
+    form[1] = 0.5 * (dot(u, Hv) + dot(v, Hu)) * inv_g;
+    form[2] = dot(v, Hv) * inv_g;
+    if (!all_finite(form, 3)) curvature_form_scaled(grad, hess, u, v, form);
+  } else {
+    /* |grad f|^2 overflows or underflows although |grad f| need not */
+    curvature_form_scaled(grad, hess, u, v, form);
+  }
+  if (!all_finite(form, 3)) return DC_ERANGE;
+  out[0] = form[0];
+  out[1] = form[1];
+  out[2] = form[2];
   return DC_OK;
 }
 
 void dc_form_principal(const double form[3], double *k1, double *k2, double *theta)
 {
-  const double mean = 0.5 * (form[0] + form[2]);
-  const double half = 0.5 * (form[0] - form[2]);
-  const double r = sqrt(half * half + form[1] * form[1]);   /* curvatures: no overflow concern */
+  double mean = 0.5 * (form[0] + form[2]);
+  double half = 0.5 * (form[0] - form[2]);
+  if (!(isfinite(mean) && isfinite(half))) {   /* the sum overflows, the halves need not */
+    mean = 0.5 * form[0] + 0.5 * form[2];
+    half = 0.5 * form[0] - 0.5 * form[2];
+  }
+  const double r2 = half * half + form[1] * form[1];
+  double r = sqrt(r2);
+  if (!(r2 >= DBL_MIN && r2 <= DBL_MAX) && (half != 0.0 || form[1] != 0.0))
+    r = hypot(half, form[1]);                  /* the squares overflow or underflow */
   *k1 = mean + r;
   *k2 = mean - r;
   if (theta) *theta = 0.5 * atan2(form[1], half);
 }
 
+/* From the relative principal curvatures of finite inputs (+inf: overflowed). */
 static int radii_from_curvatures(double k_big, double k_small, double *R_major, double *R_minor)
 {
-  if (!(k_small > 0.0) || !isfinite(k_big)) return DC_EDOM;
-  *R_major = 1.0 / k_small;
-  *R_minor = 1.0 / k_big;
+  if (!(k_small > 0.0)) return DC_EDOM;
+  const double Rmaj = 1.0 / k_small, Rmin = 1.0 / k_big;
+  /* 1/k_small overflows for a subnormal k_small; 1/k_big underflows to 0
+     when k_big overflowed */
+  if (!(isfinite(Rmaj) && Rmin > 0.0)) return DC_ERANGE;
+  *R_major = Rmaj;
+  *R_minor = Rmin;
   return DC_OK;
 }
 
 int dc_form_relative_radii(const double form[3], double *R_major, double *R_minor)
 {
+  if (!all_finite(form, 3)) return DC_EDOM;
   double k1, k2;
   dc_form_principal(form, &k1, &k2, 0);
   return radii_from_curvatures(k1, k2, R_major, R_minor);
@@ -67,11 +134,26 @@ int dc_form_relative_radii(const double form[3], double *R_major, double *R_mino
 int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
                       double omega, double *R_major, double *R_minor)
 {
-  const double sum = k1I + k2I + k1II + k2II;
-  const double dI = k1I - k2I, dII = k1II - k2II;
-  const double root = sqrt(fmax(0.0, dI * dI + dII * dII + 2.0 * dI * dII * cos(2.0 * omega)));
+  const double k[4] = {k1I, k2I, k1II, k2II};
+  if (!(all_finite(k, 4) && isfinite(omega))) return DC_EDOM;
+  const double c2 = cos(2.0 * omega);
+  double sum = k1I + k2I + k1II + k2II;
+  double dI = k1I - k2I, dII = k1II - k2II;
+  double root2 = dI * dI + dII * dII + 2.0 * dI * dII * c2;
+  int e = 0;
+  if (!(isfinite(sum) && isfinite(root2)) || (root2 < DBL_MIN && (dI != 0.0 || dII != 0.0))) {
+    /* the squares overflow or underflow: the same on curvatures scaled by
+       2^-e (exact), scaled back below */
+    e = max_exponent(k, 4);
+    const double s1I = ldexp(k1I, -e), s2I = ldexp(k2I, -e), s1II = ldexp(k1II, -e), s2II = ldexp(k2II, -e);
+    sum = s1I + s2I + s1II + s2II;
+    dI = s1I - s2I;
+    dII = s1II - s2II;
+    root2 = dI * dI + dII * dII + 2.0 * dI * dII * c2;
+  }
+  const double root = sqrt(fmax(0.0, root2));
   /* Eq. 3: 1/R_i = (sum - root)/2, Eq. 4: 1/R_j = (sum + root)/2 */
-  return radii_from_curvatures(0.5 * (sum + root), 0.5 * (sum - root), R_major, R_minor);
+  return radii_from_curvatures(ldexp(0.5 * (sum + root), e), ldexp(0.5 * (sum - root), e), R_major, R_minor);
 }
 
 void dc_form_major_axis(const double form[3], const double u[3], const double v[3], double axis[3])

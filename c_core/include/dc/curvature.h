@@ -22,7 +22,8 @@ void dc_tangent_basis(const double n[3], double u[3], double v[3]);
 
 /* Curvature form (uu, uv, vv) of the level surface of f through a point,
    from grad f and the symmetric Hessian (row-major 3x3) there, on the basis
-   (u, v). DC_EDOM if |grad f| is 0 or not finite. */
+   (u, v). DC_EDOM if grad f is 0 or an input is not finite; DC_ERANGE
+   if an entry of the form overflows. */
 int dc_curvature_form(const double grad[3], const double hess[9],
                       const double u[3], const double v[3], double form[3]);
 
@@ -31,14 +32,16 @@ int dc_curvature_form(const double grad[3], const double hess[9],
 void dc_form_principal(const double form[3], double *k1, double *k2, double *theta);
 
 /* Relative principal radii R_major >= R_minor from a relative curvature form
-   (sum of both bodies' forms). DC_EDOM when the smaller relative curvature is
-   <= 0 or not finite (flat, concave or degenerate contact): Hertz does not
-   apply. */
+   (sum of both bodies' forms). DC_EDOM when an entry is not finite or the
+   smaller relative curvature is <= 0 (flat, concave or degenerate
+   contact): Hertz does not apply. DC_ERANGE when a radius overflows (a
+   subnormal curvature) or underflows (a curvature beyond DBL_MAX). */
 int dc_form_relative_radii(const double form[3], double *R_major, double *R_minor);
 
 /* Review Eqs. 3-4: relative principal radii from the principal curvatures
    (k1I, k2I) and (k1II, k2II) of the two bodies and the angle omega between
-   the k1 directions. Same domain as dc_form_relative_radii. */
+   the k1 directions. Same domain and statuses as dc_form_relative_radii
+   (all five inputs finite). */
 int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
                       double omega, double *R_major, double *R_minor);
 
