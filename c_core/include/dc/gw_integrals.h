@@ -73,7 +73,10 @@ int dc_gw_F(int order, double h, double *F);
 /* All four F_0, F_1/2, F_1, F_3/2 at once (shares the exp); F[order]. */
 int dc_gw_F_all(double h, double F[4]);
 
-/* F_n(h) from the closed forms (erfc; GSL Bessel K_nu, I_nu). */
+/* F_n(h) from the closed forms (erfc; GSL Bessel K_nu, I_nu), same domain.
+   For |h| < 1e-20 the h = 0 values (exact to rounding: the Bessel forms
+   fail where h^2/4 underflows); DC_ERANGE, output untouched, if GSL
+   reports an error (none seen over the domain). */
 int dc_gw_F_closed(int order, double h, double *F);
 
 #ifdef __cplusplus
