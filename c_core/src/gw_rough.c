@@ -5,32 +5,71 @@
 #include "dc/status.h"
 #include <math.h>
 
+/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
+   mantissas multiplied, exponents summed, one scaling (rounded as the
+   plain product would be when that stays in range) */
+static double product(int n, const double *x)
+{
+  double m = 1.0;
+  int e = 0;
+  for (int i = 0; i < n; i++) {
+    int k;
+    m *= frexp(x[i], &k);
+    e += k;
+    m = frexp(m, &k);
+    e += k;
+  }
+  return ldexp(m, e);
+}
+
+static int state_finite(const dc_gw_rough_state *s)
+{
+  return isfinite(s->F) && isfinite(s->kn) && isfinite(s->area);
+}
+
 int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
-                         double sigma, double delta, dc_gw_rough_state *s)
+                         double sigma, double delta, dc_gw_rough_state *out)
 {
   if (!(Estar > 0.0 && isfinite(Estar) && n_asp > 0.0 && isfinite(n_asp) &&
         sigma >= 0.0 && isfinite(sigma) && isfinite(delta)))
     return DC_EDOM;
-  const double sRc = sqrt(g->Rc);
+  dc_gw_rough_state s;
   if (sigma <= 1e-80 * fabs(delta) || sigma == 0.0) {
     /* smooth limit: elliptic Hertz (review Eqs. 1-2) times n_asp */
-    if (delta <= 0.0) { s->F = s->area = s->kn = 0.0; s->h = 1e300; return DC_OK; }
-    dc_hertz_state hs;
-    dc_hertz_contact(g, Estar, delta, &hs);
-    s->F = n_asp * hs.F;
-    s->kn = n_asp * hs.kn;
-    s->area = n_asp * hs.area;
-    s->h = -1e300;
-    return DC_OK;
+    if (delta <= 0.0) {
+      s.F = s.area = s.kn = 0.0;
+      s.h = 1e300;
+    } else {
+      dc_hertz_state hs;
+      const int st = dc_hertz_contact(g, Estar, delta, &hs);
+      s.F = n_asp * hs.F;
+      s.kn = n_asp * hs.kn;
+      s.area = n_asp * hs.area;
+      s.h = -1e300;
+      if (st != DC_OK || !state_finite(&s)) {   /* a product overflowed */
+        const double sR = sqrt(g->R_force), sd = sqrt(delta);
+        s.F = product(6, (const double[]){n_asp, 4.0 / 3.0, Estar, sR, sd, delta});
+        s.kn = product(5, (const double[]){n_asp, 2.0, Estar, sR, sd});
+        s.area = product(4, (const double[]){n_asp, M_PI, g->R_area, delta});
+      }
+    }
+  } else {
+    const double h = -delta / sigma;
+    if (h < DC_GW_H_MIN) return DC_ERANGE;  /* unreachable: sigma > 1e-80 |delta| */
+    double Fn[4];
+    dc_gw_F_all(h, Fn);
+    const double sRc = sqrt(g->Rc), ss = sqrt(sigma);
+    s.F = n_asp * 4.0 / 3.0 * Estar * sRc * sigma * ss * g->gamma * Fn[DC_GW_F32];
+    s.kn = n_asp * 2.0 * Estar * sRc * ss * g->gamma * Fn[DC_GW_F12];
+    s.area = n_asp * M_PI * g->Rc * sigma * g->beta * Fn[DC_GW_F1];
+    s.h = h;
+    if (!state_finite(&s)) {   /* a product overflowed */
+      s.F = product(8, (const double[]){n_asp, 4.0 / 3.0, Estar, sRc, sigma, ss, g->gamma, Fn[DC_GW_F32]});
+      s.kn = product(7, (const double[]){n_asp, 2.0, Estar, sRc, ss, g->gamma, Fn[DC_GW_F12]});
+      s.area = product(6, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, Fn[DC_GW_F1]});
+    }
   }
-  const double h = -delta / sigma;
-  if (h < DC_GW_H_MIN) return DC_ERANGE;  /* unreachable: sigma > 1e-80 |delta| */
-  double Fn[4];
-  dc_gw_F_all(h, Fn);
-  const double ss = sqrt(sigma);
-  s->F = n_asp * 4.0 / 3.0 * Estar * sRc * sigma * ss * g->gamma * Fn[DC_GW_F32];
-  s->kn = n_asp * 2.0 * Estar * sRc * ss * g->gamma * Fn[DC_GW_F12];
-  s->area = n_asp * M_PI * g->Rc * sigma * g->beta * Fn[DC_GW_F1];
-  s->h = h;
+  if (!state_finite(&s)) return DC_ERANGE;
+  *out = s;
   return DC_OK;
 }

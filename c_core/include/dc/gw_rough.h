@@ -42,7 +42,9 @@ typedef struct {
 } dc_gw_rough_state;
 
 /* Domain: Estar > 0, n_asp > 0, sigma >= 0, all finite; delta finite (any
-   sign; with sigma = 0 and delta <= 0 the force is 0). DC_EDOM otherwise. */
+   sign; with sigma = 0 and delta <= 0 the force is 0). DC_EDOM otherwise;
+   DC_ERANGE when F, kn or the area overflows. The state is written only
+   on DC_OK. g: from dc_hertz_geometry. */
 int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
                          double sigma, double delta, dc_gw_rough_state *s);
 
