@@ -5,6 +5,23 @@
 #include "dc/status.h"
 #include <math.h>
 
+/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
+   mantissas multiplied, exponents summed, one scaling (rounded as the
+   plain product would be when that stays in range) */
+static double product(int n, const double *x)
+{
+  double m = 1.0;
+  int e = 0;
+  for (int i = 0; i < n; i++) {
+    int k;
+    m *= frexp(x[i], &k);
+    e += k;
+    m = frexp(m, &k);
+    e += k;
+  }
+  return ldexp(m, e);
+}
+
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
                                   double sigma, double delta, double *kt)
 {
@@ -13,12 +30,21 @@ int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_a
         isfinite(sigma) && isfinite(delta)))
     return DC_EDOM;
   const double pre = 2.0 * M_PI * n_asp * G * chi;
+  double k, len, F12 = 1.0;
   if (sigma == 0.0 || sigma <= 1e-80 * fabs(delta)) {
-    *kt = delta > 0.0 ? pre * sqrt(R_asp * delta) : 0.0;
-    return DC_OK;
+    if (!(delta > 0.0)) { *kt = 0.0; return DC_OK; }
+    len = delta;
+    k = pre * sqrt(R_asp * delta);
+  } else {
+    dc_gw_F(DC_GW_F12, -delta / sigma, &F12);
+    len = sigma;
+    k = pre * sqrt(R_asp * sigma) * F12;   /* Eq. 83 with chi* = chi F_1/2 */
   }
-  double F12;
-  dc_gw_F(DC_GW_F12, -delta / sigma, &F12);
-  *kt = pre * sqrt(R_asp * sigma) * F12;   /* Eq. 83 with chi* = chi F_1/2 */
+  if (!isfinite(k)) {
+    /* a product overflowed: the same without intermediate overflow */
+    k = product(7, (const double[]){2.0 * M_PI, n_asp, G, chi, sqrt(R_asp), sqrt(len), F12});
+    if (!isfinite(k)) return DC_ERANGE;
+  }
+  *kt = k;
   return DC_OK;
 }

@@ -40,7 +40,8 @@ extern "C" {
 
 /* chi (Mindlin, review Eq. 57) is dc_mindlin_chi in dc/mindlin.h. */
 /* k_t of Eq. 83. Domain: G > 0, n_asp > 0, R_asp > 0, sigma >= 0, chi > 0,
-   all finite; delta finite (k_t = 0 when sigma = 0 and delta <= 0). */
+   all finite; delta finite (k_t = 0 when sigma = 0 and delta <= 0).
+   DC_EDOM outside; DC_ERANGE, kt untouched, when k_t overflows. */
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
                                   double sigma, double delta, double *kt);
 
