@@ -122,10 +122,12 @@ static int lu_solve(double *A, double *b, int n)
 }
 
 int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_opts *o,
-                dc_gw_solve_result *r)
+                dc_gw_solve_result *out)
 {
   if (!(ap >= -10.0 && ap <= 1e4 && mu > 0.0 && mu <= 1e3 && o->domain_scale > 0.0 &&
-        o->abar >= 0.0 && o->abar < 1e3 && o->max_iter > 0))
+        isfinite(o->domain_scale) && o->abar >= 0.0 && o->abar < 1e3 && o->max_iter > 0 &&
+        isfinite(o->tol) && (o->force_mode == DC_GW_FORCE_DOMAIN || o->force_mode == DC_GW_FORCE_FULL) &&
+        (o->f32_mode == DC_GW_F32_EXACT || o->f32_mode == DC_GW_F32_GAUSS10)))
     return DC_EDOM;
   const int m = S->m;
   /* Eq. 60 in r* units: a = sqrt(R delta) -> sqrt(alpha'/2); sqrt(R sigma) -> 1/sqrt 2 */
@@ -133,6 +135,8 @@ int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_o
   if (ap >= 1.0) abar = (1.75 + 1.0 / ap) * sqrt(0.5 * ap);
   else abar = (1.75 + fmin(fabs(ap), ap != 0.0 ? fabs(1.0 / ap) : INFINITY)) * sqrt(0.5);
   abar = o->abar > 0.0 ? o->abar : abar * o->domain_scale;
+  if (!(abar < 1e3)) return DC_EDOM;   /* domain_scale too large: as o->abar */
+  dc_gw_solve_result res, *r = &res;
   const size_t mm = (size_t)m * m;
   double *buf = malloc((2 * mm + 5 * (size_t)m) * sizeof *buf);
   if (!buf) return DC_ERANGE;
@@ -167,7 +171,8 @@ int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_o
     if (lu_solve(J, rhs, m)) { st = DC_ERANGE; break; }
     double nd = 0.0, np = 0.0;
     for (int i = 0; i < m; i++) { p[i] += rhs[i]; nd += rhs[i] * rhs[i]; np += p[i] * p[i]; }
-    const double e = np > 0.0 ? sqrt(nd / np) : sqrt(nd);
+    double e = np > 0.0 ? sqrt(nd / np) : sqrt(nd);
+    if (!isfinite(e)) e = sqrt(nd) / sqrt(np);   /* tiny p (tiny mu): nd/np overflows */
     if (it < DC_GW_SOLVER_MAX_HIST) r->hist[it] = e;
     r->iterations = it + 1;
     if (e < o->tol || nd == 0.0) { st = DC_OK; break; }
@@ -196,5 +201,11 @@ int dc_gw_solve(const dc_gw_solver *S, double ap, double mu, const dc_gw_solve_o
   r->abar = abar;
   r->p0 = p[0];
   free(buf);
+  /* P/P_h(delta) overflows for alpha' below ~1e-205; an iteration that
+     left the range of doubles: DC_ERANGE, result untouched */
+  int ok = isfinite(r->Pstar_sigma) && isfinite(r->Pstar_delta) && isfinite(r->p0);
+  for (int i = 0; i < r->iterations && i < DC_GW_SOLVER_MAX_HIST; i++) ok &= isfinite(r->hist[i]) != 0;
+  if (st == DC_ERANGE || !ok) return DC_ERANGE;
+  memcpy(out, r, sizeof *out);
   return st;
 }

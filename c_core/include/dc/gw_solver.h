@@ -94,8 +94,13 @@ dc_gw_solve_opts dc_gw_solve_default_opts(void);
 int dc_gw_solver_init(dc_gw_solver *S, int m);
 void dc_gw_solver_free(dc_gw_solver *S);
 
-/* Solve for alpha' = delta/sigma in [-10, 1e4], mu in (0, 1e3].
-   DC_ENOCONV if the tolerance was not met (result holds the last iterate). */
+/* Solve for alpha' = delta/sigma in [-10, 1e4], mu in (0, 1e3]; options:
+   domain_scale > 0 with the resulting domain radius below 1e3 (as for
+   abar, in [0, 1e3)), force_mode and f32_mode one of their enums, tol
+   finite, max_iter > 0. DC_EDOM outside. DC_ENOCONV if the tolerance was
+   not met (result holds the last iterate). DC_ERANGE, result untouched,
+   if the Jacobian is singular, the iteration leaves the range of doubles,
+   or P/P_h(delta) overflows (alpha' > 0 below ~1e-205). */
 int dc_gw_solve(const dc_gw_solver *S, double alpha_p, double mu,
                 const dc_gw_solve_opts *o, dc_gw_solve_result *r);
 
