@@ -29,15 +29,20 @@ static double influence(double r, double t)
   return t / (r + t) * el.K;
 }
 
-int dc_gw_solver_init(dc_gw_solver *S, int m)
+int dc_gw_solver_init(dc_gw_solver *out, int m)
 {
   if (m < 2 || m > 1000) return DC_EDOM;
+  dc_gw_solver S0, *S = &S0;
   S->m = m;
   S->x = malloc(m * sizeof *S->x);
   S->s = malloc(m * sizeof *S->s);
   S->alpha = malloc((size_t)m * m * sizeof *S->alpha);
   gsl_integration_glfixed_table *t = gsl_integration_glfixed_table_alloc(m);
-  if (!S->x || !S->s || !S->alpha || !t) { dc_gw_solver_free(S); return DC_ERANGE; }
+  if (!S->x || !S->s || !S->alpha || !t) {   /* out of memory: *out untouched */
+    dc_gw_solver_free(S);
+    if (t) gsl_integration_glfixed_table_free(t);
+    return DC_ERANGE;
+  }
   for (int i = 0; i < m; i++) gsl_integration_glfixed_point(0.0, 1.0, i, &S->x[i], &S->s[i], t);
   gsl_integration_glfixed_table_free(t);
   for (int i = 0; i < m; i++)
@@ -56,6 +61,7 @@ int dc_gw_solver_init(dc_gw_solver *S, int m)
     const double ph = sqrt(1.0 - S->x[i] * S->x[i]);
     S->alpha[i * m + i] = (M_PI * M_PI / 8.0 * (1.0 - 0.5 * S->x[i] * S->x[i]) - sum) / (S->s[i] * ph);
   }
+  *out = S0;
   return DC_OK;
 }
 

@@ -90,7 +90,8 @@ typedef struct {
    (the rounding floor of ||dp||/||p|| is ~1e-14 at m = 100). */
 dc_gw_solve_opts dc_gw_solve_default_opts(void);
 
-/* Gauss points and alpha_ij for m in [2, 1000]. DC_EDOM outside. */
+/* Gauss points and alpha_ij for m in [2, 1000]. DC_EDOM outside;
+   DC_ERANGE if the tables cannot be allocated (*S untouched on either). */
 int dc_gw_solver_init(dc_gw_solver *S, int m);
 void dc_gw_solver_free(dc_gw_solver *S);
 
