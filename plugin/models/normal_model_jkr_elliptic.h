@@ -1,20 +1,17 @@
 /* LIGGGHTS normal model `jkr_elliptic`: adhesive elastic contact (c_core:
    dc/jkr_elliptic.h: classical JKR for spheres, the Johnson-Greenwood
-   elliptic theory for superquadrics, review Eqs. 19-28; dissipation:
-   dc/dissipation_adhesive.h).
+   elliptic theory for superquadrics, review Eqs. 19-28; damping on the
+   flat-punch stiffness, dc/damping.h and dc/dissipation_adhesive.h).
 
    Deck: pair_style gran model jkr_elliptic tangential history [surface superquadric] [settings]
          fix ID all wall/gran model jkr_elliptic tangential history [surface superquadric] primitive ... [settings]
          neigh_modify contact_distance_factor F   (see below)
-   Settings: tangential_damping on|off (default on);
-     viscoelastic on|off (default off): damping from the viscoelastic law
-       F_dis = A (d delta/dt) k_punch instead of the restitution coefficient
-       (property viscoelasticTime A [s], as in hertz_elliptic);
-     maxRadiusFactor R   superquadrics: cap on the relative principal radii,
-       as in hertz_elliptic (default 100).
+   Settings: those of every project normal model (dc_model_base.h) but
+     limitForce (the adhesive force is tensile by design; 'limitForce on'
+     stops the run).
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
-     viscoelasticTime), coefficientFriction as usual, and workOfAdhesion
-     peratomtypepair [J/m^2] (w = 2 x surface energy for like surfaces; w >= 0).
+     viscoelasticTime), and workOfAdhesion peratomtypepair [J/m^2] >= 0
+     (w = 2 x surface energy for like surfaces).
    A contact forms when the surfaces touch (delta = 0) and is kept, with
    tensile force, on the stable branch of the JKR curve until the overlap
    falls below delta_break (spheres: -3/4 (pi^2 w^2 R / E*^2)^1/3;
@@ -26,80 +23,65 @@
    volume-equivalent radius for walls); the run stops with the value needed
    otherwise. Damping acts on the flat-punch stiffness k_punch = pi E* a /
    K(e^2) of the current contact ellipse (2 E* a for a circle; dF/d delta
-   itself is unbounded at separation); tangential stiffness 8 G (a b)^1/2.
-   Superquadrics: relative principal radii from both surfaces' curvatures
-   (superquadric_curvature.h), the gap of a formed contact from
-   superquadric_gap.h, and the elliptic solve warm-started from the previous
-   step (three history values). w = 0 is exactly `hertz_elliptic`. */
+   itself is unbounded at separation); tangential stiffness 8 G* (a b)^1/2.
+   Contact patch: the JKR ellipse, formed while the neck holds, the normal
+   force that bounds friction F + 2 |F_pull| (dc_jkr_friction_load).
+   Superquadrics: the gap of a formed contact from superquadric_gap.h, the
+   elliptic solve warm-started from the previous step (three history
+   values). w = 0 is exactly `hertz_elliptic`. */
 #ifdef NORMAL_MODEL
-NORMAL_MODEL(JKR_ELLIPTIC,jkr_elliptic,32)
+NORMAL_MODEL(JKR_ELLIPTIC,jkr_elliptic,@DC_MODEL_ID@)
 #else
 #ifndef NORMAL_MODEL_JKR_ELLIPTIC_H_
 #define NORMAL_MODEL_JKR_ELLIPTIC_H_
 
-#include <cmath>
-#include <cstdio>
-#include "contact_models.h"
-#include "global_properties.h"
-#include "neighbor.h"
-#include "normal_model_base.h"
-#include "normal_force_common.h"
-#include "superquadric_curvature.h"
+#include "dc_model_base.h"
 #include "superquadric_gap.h"
-#include "dc/dissipation_adhesive.h"
 #include "dc/jkr_elliptic.h"
-#include "dc/status.h"
+#include "dc/mindlin.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
 
 template<>
-class NormalModel<JKR_ELLIPTIC> : public NormalModelBase
+class NormalModel<JKR_ELLIPTIC> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    NormalModelBase(lmp, hsetup, c),
-    Yeff(NULL), Geff(NULL), betaeff(NULL), work(NULL), viscoelasticTime(NULL),
-    tangential_damping(true), viscoelastic(false), maxRadiusFactor(100.0), hint_offset(-1)
+    DcNormalModel(lmp, hsetup, c, "jkr_elliptic", NO_LIMIT_FORCE), work(NULL), hint_offset(-1)
   {
-    contact_offset = hsetup->add_history_value("jkr_contact", "0");
-#ifdef SUPERQUADRIC_ACTIVE_FLAG
-    if (atom->superquadric_flag) {
-      hint_offset = hsetup->add_history_value("jkr_hint_v", "0");
-      hsetup->add_history_value("jkr_hint_L", "0");
-      hsetup->add_history_value("jkr_hint_s", "0");
+    /* the solver hint (fields 1-3) only where elliptic contacts occur */
+    const int nfields = atom->superquadric_flag ? DC_JKR_HISTORY_NFIELDS : 1;
+    for (int k = 0; k < nfields; k++) {
+      const int off = hsetup->add_history_value(dc_jkr_history[k].name, dc_jkr_history[k].flips ? "1" : "0");
+      if (k == 0) contact_offset = off;
+      if (k == 1) hint_offset = off;
     }
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
 #endif
   }
 
-  void registerSettings(Settings &settings)
+  void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
-    settings.registerOnOff("tangential_damping", tangential_damping, true);
-    settings.registerOnOff("viscoelastic", viscoelastic, false);
-    settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
-  }
-
-  void postSettings(IContactHistorySetup *, ContactModelBase *c)
-  {
+    DcNormalModel::postSettings(hsetup, c);
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
-    curvature.setup(lmp, c, maxRadiusFactor, "jkr_elliptic");
     gap.setup(lmp, c);
-#else
-    (void)c;
 #endif
   }
 
   void connectToProperties(PropertyRegistry &registry)
   {
+    DcNormalModel::connectToProperties(registry);
     const char *caller = "model jkr_elliptic";
-    connectElasticProperties(registry, caller, Yeff, Geff, betaeff, !viscoelastic);
     registry.registerProperty("workOfAdhesion", &createWork, caller);
     registry.connect("workOfAdhesion", work, caller);
-    if (viscoelastic) connectViscoelasticTime(registry, caller, viscoelasticTime);
+    const int n = registry.max_type();
+    dc_param_error err;
+    for (int i = 1; i <= n; i++)
+      for (int j = 1; j <= n; j++)
+        if (dc_jkr_check(work[i][j], &err) != DC_OK) stopParam(err, i, j);
   }
-
-  inline double stressStrainExponent() { return 1.5; }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
@@ -115,58 +97,34 @@ public:
   {
     double &formed = scdata.contact_history[contact_offset];
     const double w = work[scdata.itype][scdata.jtype];
-    if (formed == 0.0 || w == 0.0) {
-      release(scdata);
-      return;
-    }
+    if (formed == 0.0 || w == 0.0) return release(scdata);
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (!gap.closeOverlap(lmp, sidata, sidata.radsum, delta, vn)) {
-        release(scdata);
-        return;
-      }
+      if (!gap.closeOverlap(lmp, sidata, sidata.radsum, delta, vn)) return release(scdata);
     } else
 #endif
     delta = closeSphereContact(scdata, vn);
-    if (!jkrForce(sidata, delta, vn, false, i_forces, j_forces)) {
-      release(scdata);
-      return;
-    }
+    if (!jkrForce(sidata, delta, vn, false, i_forces, j_forces)) return release(scdata);
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     sidata.has_force_update = true;
   }
-
-  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
   void release(SurfacesCloseData &scdata)
   {
     if (scdata.contact_flags) *scdata.contact_flags &= ~CONTACT_NORMAL_MODEL;
     scdata.contact_history[contact_offset] = 0.0;
-  }
-
-  /* On forming a contact: can LIGGGHTS follow it down to delta_break? */
-  void checkReach(const SurfacesIntersectData &sidata, double delta_break)
-  {
-    const double reach = sidata.is_wall ? sidata.radi : sidata.radsum;
-    const double need = 1.0 - delta_break / reach;
-    if (neighbor->contactDistanceFactor < need) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Normal model jkr_elliptic: adhesive contacts are kept until separation: "
-               "set neigh_modify contact_distance_factor >= %.6g", need);
-      error->one(FLERR, msg);
-    }
+    publishNone(scdata);
   }
 
   void fail(const char *what, double delta, double R1, double R2, double w, int st)
   {
     char msg[256];
-    snprintf(msg, sizeof msg, "Normal model jkr_elliptic: %s at overlap %g, radii %g, %g, work of adhesion %g: %s",
+    snprintf(msg, sizeof msg, "%s at overlap %g, radii %g, %g, work of adhesion %g: %s",
              what, delta, R1, R2, w, dc_status_str(st));
-    error->one(FLERR, msg);
+    stop(false, msg);
   }
 
   /* Applies the force at overlap delta; false (nothing applied) when the
@@ -176,61 +134,73 @@ private:
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
     const double Y = Yeff[itype][jtype], G = Geff[itype][jtype], w = work[itype][jtype];
-    double R_major = sphereEffectiveRadius(sidata), R_minor = R_major;
-#ifdef SUPERQUADRIC_ACTIVE_FLAG
-    const bool sq = sidata.is_non_spherical && atom->superquadric_flag;
-    if (sq) curvature.relativeRadii(lmp, sidata, R_major, R_minor, "jkr_elliptic");
-#else
-    const bool sq = false;
-#endif
+    const bool sq = superquadric(sidata);
+    double R_major, R_minor, axis[3];
+    double *ax = axisWanted(axis);
+    relativeRadii(sidata, R_major, R_minor, ax);
+    dc_contact c;
     double P, Sn, kn, kt;
     if (w == 0.0) {
       double r_force = R_major, r_area = R_major;
+      dc_hertz_geom g;
       if (sq) {
-        dc_hertz_geom g;
         const int st = dc_hertz_geometry(R_major, R_minor, &g);
         if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, st);
         r_force = g.R_force;
         r_area = g.R_area;
       }
-      hertzStiffness(Y, G, r_force, r_area, delta, kn, Sn, kt);
+      const double root = dc_hertz_stiffness(Y, r_force, delta, &kn, &Sn);
+      kt = dc_mindlin_kt_circle(G, r_area == r_force ? root : sqrt(r_area * delta));
       P = kn * delta;
+      if (ax) {
+        dc_hertz_state s;
+        s.a = s.b = root;
+        if (sq) dc_hertz_contact(&g, Y, delta, &s);
+        c.a = s.a;
+        c.b = s.b;
+        c.F_bound = P;
+      }
     } else {
       dc_jkr_state s;
+      double F_pull;
       int st;
       if (!sq) {
         /* separation (contact = 0) is decided inside, with the same delta_break */
         st = dc_jkr_sphere(R_major, Y, w, delta, &s);
-        if (forming) checkReach(sidata, dc_jkr_sphere_delta_break(R_major, Y, w));
+        if (forming) checkReach(sidata, -dc_jkr_sphere_delta_break(R_major, Y, w), whyReach(), w);
+        F_pull = dc_jkr_sphere_pulloff(R_major, w);
       } else {
         dc_jkr_geom g;
         st = dc_jkr_geometry(R_major, R_minor, Y, w, &g);
         if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, st);
-        if (forming) checkReach(sidata, g.delta_break);
+        if (forming) checkReach(sidata, -g.delta_break, whyReach(), w);
         dc_jkr_hint *hint = reinterpret_cast<dc_jkr_hint *>(&sidata.contact_history[hint_offset]);
         st = dc_jkr_contact(&g, delta, hint, &s);
+        F_pull = -g.F_pull;
       }
       if (st != DC_OK) fail("contact state", delta, R_major, R_minor, w, st);
       if (!s.contact) return false;
       P = s.F;
-      /* flat-punch stiffness of the contact ellipse (circle: 2 E* a) */
       if (sq) {
-        st = dc_dissip_adhesive_state(1.0, Y, &s, 1.0, &Sn);
+        st = dc_punch_stiffness(Y, s.a, s.b > 0.0 ? s.b : s.a, &Sn);
         if (st != DC_OK) fail("punch stiffness", delta, R_major, R_minor, w, st);
-        kt = 8.0 * G * sqrt(s.a * s.b);
+        kt = dc_mindlin_kt_circle(G, sqrt(s.a * s.b));
       } else {
-        Sn = 2.0 * Y * s.a;
-        kt = 8.0 * G * s.a;
+        Sn = dc_punch_stiffness_circle(Y, s.a);
+        kt = dc_mindlin_kt_circle(G, s.a);
       }
       kn = Sn;
+      c.a = s.a;
+      c.b = s.b;
+      c.F_bound = dc_jkr_friction_load(P, F_pull);
     }
-    if (viscoelastic) {
-      /* F_dis = A (d delta/dt) k_punch (dc/dissipation_adhesive.h) */
-      viscoelasticNormalForce(sidata, P, vn, Sn, kn, kt, viscoelasticTime[itype][jtype], tangential_damping,
-                              false, force->nktv2p, atom->x, i_forces, j_forces);
-    } else {
-      dampedNormalForce(sidata, P, vn, Sn, kn, kt, betaeff[itype][jtype], tangential_damping,
-                        false, force->nktv2p, atom->x, i_forces, j_forces);
+    applyForce(sidata, P, vn, Sn, kn, kt, i_forces, j_forces);
+    if (ax) {
+      c.F = P;
+      c.kn = Sn;
+      c.area = M_PI * c.a * c.b;
+      c.formed = 1;
+      publish(sidata, c, ax);
     }
     return true;
   }
@@ -240,12 +210,10 @@ private:
     return MODEL_PARAMS::createPerTypePairProperty(registry, "workOfAdhesion", caller, sanity_checks, 0.0);
   }
 
-  double **Yeff, **Geff, **betaeff, **work, **viscoelasticTime;
-  bool tangential_damping, viscoelastic;
-  double maxRadiusFactor;
+  static const char *whyReach() { return "adhesive contacts (work of adhesion %g J/m^2) are kept until separation"; }
+  double **work;
   int contact_offset, hint_offset;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
-  SuperquadricCurvature curvature;
   SuperquadricGap gap;
 #endif
 };

@@ -47,15 +47,21 @@ public:
   /* Relative principal radii R_major >= R_minor at this contact. Each
      relative principal radius is capped at maxRadiusFactor times the
      volume-equivalent effective radius (flat superquadric faces have zero
-     curvature). Ends the run on a degenerate (zero or non-finite) gradient. */
+     curvature). Ends the run on a degenerate (zero or non-finite) gradient.
+     With axis, also the major-axis direction of the contact ellipse. */
   void relativeRadii(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &sidata,
-                     double &R_major, double &R_minor, const char *model)
+                     double &R_major, double &R_minor, const char *model, double *axis = 0)
   {
     LAMMPS_NS::Atom *atom = lmp->atom;
     double u[3], v[3], form[3], form_j[3];
     dc_tangent_basis(sidata.en, u, v);
     if (sidata.is_wall) {
-      bodyForm(atom, sidata.i, sidata.contact_point, u, v, form, lmp, model);
+      /* primitive walls hand over the particle's deepest point; mesh walls
+         its projection on the triangle, deltan from it along -en */
+      double p[3];
+      const double back = sidata.mesh ? sidata.deltan : 0.0;
+      for (int k = 0; k < 3; k++) p[k] = sidata.contact_point[k] - back * sidata.en[k];
+      bodyForm(atom, sidata.i, p, u, v, form, lmp, model);
     } else {
       const double ai = sidata.contact_history[alpha_i_offset_];
       const double aj = sidata.contact_history[alpha_j_offset_];
@@ -70,6 +76,7 @@ public:
     }
     double k1, k2;
     dc_form_principal(form, &k1, &k2, 0);
+    if (axis) dc_form_major_axis(form, u, v, axis);
     const double reff = sidata.is_wall ? sidata.radi : sidata.radi * sidata.radj / (sidata.radi + sidata.radj);
     const double k_min = 1.0 / (max_radius_factor_ * reff);
     R_minor = 1.0 / (k1 > k_min ? k1 : k_min);

@@ -1,0 +1,84 @@
+/* Pair / wall / superquadric contact geometry in one place: the effective
+   radius, the overlap and normal velocity of a pair that does not touch,
+   and the application of a normal force (with its torque on non-spherical
+   particles). Data plumbing only. */
+#ifndef DC_PLUGIN_CONTACT_FRAME_H
+#define DC_PLUGIN_CONTACT_FRAME_H
+
+#include <cmath>
+#include "atom.h"
+#include "contact_interface.h"
+#include "vector_liggghts.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+/* Effective radius of a sphere pair (wall: the sphere's radius). */
+inline double sphereEffectiveRadius(const SurfacesCloseData &d)
+{
+  return d.is_wall ? d.radi : d.radi * d.radj / (d.radi + d.radj);
+}
+
+/* The radius LIGGGHTS' stock models use: the sphere's effective radius, or
+   for superquadrics the volume-equivalent one (sidata.reff). */
+inline double stockEffectiveRadius(const SurfacesIntersectData &sidata, bool superquadric_atoms)
+{
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  if (sidata.is_non_spherical && superquadric_atoms) return sidata.reff;
+#else
+  (void)superquadric_atoms;
+#endif
+  return sphereEffectiveRadius(sidata);
+}
+
+/* For a sphere contact handed to surfacesClose (not touching): the overlap
+   (negative) and normal velocity; fills en and meff for pairs (walls have
+   set them). Both LIGGGHTS callers pass a SurfacesIntersectData. */
+inline double closeSphereContact(SurfacesCloseData &scdata, double &vn)
+{
+  SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+  double delta;
+  if (sidata.is_wall) {
+    delta = sidata.deltan;
+  } else {
+    const double r = sqrt(sidata.rsq);
+    delta = sidata.radsum - r;
+    for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
+    sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+  }
+  const double *vi = sidata.v_i, *vj = sidata.v_j;
+  vn = (vi[0] - vj[0]) * sidata.en[0] + (vi[1] - vj[1]) * sidata.en[1] + (vi[2] - vj[2]) * sidata.en[2];
+  return delta;
+}
+
+/* Adds Fn along en to i (and -Fn to j), with the torque of a force off the
+   centre line for non-spherical particles; walls scale by area_ratio. */
+inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, double **x,
+                             ForceData &i_forces, ForceData &j_forces)
+{
+  const double Fn_ = sidata.is_wall ? Fn * sidata.area_ratio : Fn;
+  const double F[3] = {Fn_ * sidata.en[0], Fn_ * sidata.en[1], Fn_ * sidata.en[2]};
+  for (int k = 0; k < 3; k++) i_forces.delta_F[k] += F[k];
+  if (!sidata.is_wall)
+    for (int k = 0; k < 3; k++) j_forces.delta_F[k] -= F[k];
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+  if (sidata.is_non_spherical) {
+    double xc[3], t[3];
+    const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
+    LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
+    LAMMPS_NS::vectorCross3D(xc, Fi, t);
+    for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
+    if (!sidata.is_wall) {
+      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
+      LAMMPS_NS::vectorCross3D(xc, Fi, t);
+      for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
+    }
+  }
+#else
+  (void)x;
+#endif
+}
+
+}
+}
+#endif

@@ -1,0 +1,232 @@
+/* What the project's normal-model wrappers share: the elastic and damping
+   properties, the settings every model takes (same names, same defaults),
+   the superquadric curvature, one contact-distance check, the damped force
+   and the contact patch. A wrapper derives from DcNormalModel and only
+   translates between LIGGGHTS data and its c_core law.
+
+   Settings (after the model keywords in pair_style gran; at the end of a
+   fix wall/gran line):
+     tangential_damping on|off   damping on the tangential spring (default on)
+     limitForce on|off           clip the total normal force at zero (default off;
+                                 models with an adhesive force stop the run if on)
+     viscoelastic on|off         viscoelastic damping F_dis = A d(delta)/dt S
+                                 (property viscoelasticTime A [s]) instead of
+                                 restitution damping (coefficientRestitution)
+     maxRadiusFactor X           superquadrics: cap on each relative principal
+                                 radius, X times the volume-equivalent effective
+                                 radius, X in (1, 1e12] (default 100)
+     contactPatch on|off         store the contact patch in history values, for
+                                 compute pair/gran/local ... history (default off;
+                                 on by itself when a sub-model reads the patch) */
+#ifndef DC_PLUGIN_DC_MODEL_BASE_H
+#define DC_PLUGIN_DC_MODEL_BASE_H
+
+#include <cstdio>
+#include <string>
+#include "atom.h"
+#include "contact_frame.h"
+#include "contact_models.h"
+#include "contact_patch.h"
+#include "error.h"
+#include "force.h"
+#include "global_properties.h"
+#include "neighbor.h"
+#include "normal_model_base.h"
+#include "property_registry.h"
+#include "superquadric_curvature.h"
+#include "dc/contract.h"
+#include "dc/curvature.h"
+#include "dc/damping.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/status.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+class DcNormalModel : public NormalModelBase {
+public:
+  enum { NO_LIMIT_FORCE = 1 };  /* settings a model does not take */
+
+  DcNormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *c, const char *name,
+                int unsupported = 0) :
+    NormalModelBase(lmp, hsetup, c),
+    Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
+    tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
+    maxRadiusFactor(100.0), name_(name), unsupported_(unsupported)
+  {}
+
+  void registerSettings(Settings &settings)
+  {
+    settings.registerOnOff("tangential_damping", tangential_damping, true);
+    settings.registerOnOff("limitForce", limitForce, false);
+    settings.registerOnOff("viscoelastic", viscoelastic, false);
+    settings.registerOnOff("contactPatch", contactPatch, false);
+    settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
+  }
+
+  void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
+  {
+    if ((unsupported_ & NO_LIMIT_FORCE) && limitForce)
+      stop(true, "'limitForce on' is not available: the model's normal force is tensile by design");
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    curvature.setup(lmp, c, maxRadiusFactor, name_);
+#else
+    if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12)) stop(true, "maxRadiusFactor must be in (1, 1e12]");
+#endif
+    patch.setup(lmp, hsetup, c, contactPatch, name_);
+  }
+
+  /* E*, G* and the damping property: coefficientRestitution, or
+     viscoelasticTime with `viscoelastic on`. */
+  void connectToProperties(PropertyRegistry &registry)
+  {
+    const std::string caller = std::string("model ") + name_;
+    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller.c_str());
+    registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller.c_str());
+    registry.connect("Yeff", Yeff, caller.c_str());
+    registry.connect("Geff", Geff, caller.c_str());
+    if (viscoelastic) {
+      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller.c_str());
+      registry.connect("viscoelasticTime", viscoelasticTime, caller.c_str());
+    } else {
+      registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller.c_str());
+      registry.connect("betaeff", betaeff, caller.c_str());
+    }
+  }
+
+  inline double stressStrainExponent() { return 1.5; }
+  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+protected:
+  /* Stops the run with "Normal model <name>: <what>" (all: every rank). */
+  void stop(bool all, const char *what)
+  {
+    char msg[512];
+    snprintf(msg, sizeof msg, "Normal model %s: %s", name_, what);
+    if (all) error->all(FLERR, msg);
+    else error->one(FLERR, msg);
+  }
+
+  /* A parameter of type pair (i, j) outside its domain (dc/contract.h). */
+  void stopParam(const dc_param_error &err, int i, int j)
+  {
+    char msg[256];
+    dc_param_error_format(&err, i, j, msg, sizeof msg);
+    stop(true, msg);
+  }
+
+  /* The one contact-distance check: a force that acts at overlaps down to
+     -range needs contact_distance_factor >= 1 + range / reach (reach: the
+     sum of the radii, a wall's sphere radius); why_format (one %g, filled
+     with why_value) says what needs it. */
+  void checkReach(const SurfacesCloseData &d, double range, const char *why_format, double why_value)
+  {
+    const double reach = d.is_wall ? d.radi : d.radsum;
+    if (neighbor->contactDistanceFactor * reach < reach + range) {
+      char why[256], msg[384];
+      snprintf(why, sizeof why, why_format, why_value);
+      snprintf(msg, sizeof msg, "%s: set neigh_modify contact_distance_factor >= %.12g", why, 1.0 + range / reach);
+      stop(false, msg);
+    }
+  }
+
+  bool superquadric(const SurfacesCloseData &d) const
+  {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    return d.is_non_spherical && atom->superquadric_flag;
+#else
+    (void)d;
+    return false;
+#endif
+  }
+
+  /* Relative principal radii (spheres: the effective radius twice) and,
+     when axis is given, the major-axis direction (zero for spheres). */
+  void relativeRadii(const SurfacesIntersectData &sidata, double &R_major, double &R_minor, double *axis)
+  {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (superquadric(sidata)) {
+      curvature.relativeRadii(lmp, sidata, R_major, R_minor, name_, axis);
+      return;
+    }
+#endif
+    R_major = R_minor = sphereEffectiveRadius(sidata);
+    if (axis) axis[0] = axis[1] = axis[2] = 0.0;
+  }
+
+  /* dc_hertz_geometry, or a run-stopping message naming the radii. */
+  void hertzGeometry(double R1, double R2, dc_hertz_geom &g)
+  {
+    const int st = dc_hertz_geometry(R1, R2, &g);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "relative radii %g, %g: %s", R1, R2, dc_status_str(st));
+      stop(false, msg);
+    }
+  }
+
+  /* Elastic force P with damping on the stiffness Sn (normal; restitution
+     damping takes none where Sn <= 0) and kt (tangential), clipped at 0
+     with limitForce; stored in sidata with the secant kn and kt, applied. */
+  void applyForce(SurfacesIntersectData &sidata, double P, double vn, double Sn, double kn, double kt,
+                  ForceData &i_forces, ForceData &j_forces)
+  {
+    const int i = sidata.itype, j = sidata.jtype;
+    double gamman, gammat = 0.0;
+    if (viscoelastic) {
+      const double A = viscoelasticTime[i][j];
+      gamman = dc_damping_viscoelastic(A, Sn);
+      if (tangential_damping) gammat = dc_damping_viscoelastic(A, kt);
+    } else {
+      const double beta = betaeff[i][j];
+      gamman = dc_damping_restitution(beta, Sn > 0.0 ? Sn : 0.0, sidata.meff);
+      if (tangential_damping) gammat = dc_damping_restitution(beta, kt, sidata.meff);
+    }
+    const double nktv2p = force->nktv2p;
+    double Fn = -gamman * vn + P / nktv2p;
+    if (limitForce && Fn < 0.0) Fn = 0.0;
+    sidata.Fn = Fn;
+    sidata.kn = kn / nktv2p;
+    sidata.kt = kt / nktv2p;
+    sidata.gamman = gamman;
+    sidata.gammat = gammat;
+    applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
+  }
+
+  /* Publishes the patch of a contact (when stored). */
+  void publish(SurfacesCloseData &d, const dc_contact &c, const double *axis)
+  {
+    if (!patch.active()) return;
+    dc_patch p;
+    dc_patch_from_contact(&c, c.a > c.b ? axis : NULL, &p);
+    patch.write(d, p);
+  }
+  void publishNone(SurfacesCloseData &d)
+  {
+    if (patch.active()) patch.clear(d);
+  }
+  /* The major-axis direction is worth computing only for a stored patch. */
+  double *axisWanted(double *axis) const { return patch.active() ? axis : NULL; }
+
+  double **Yeff, **Geff, **betaeff, **viscoelasticTime;
+  bool tangential_damping, limitForce, viscoelastic, contactPatch;
+  double maxRadiusFactor;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  SuperquadricCurvature curvature;
+#endif
+
+private:
+  static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
+  }
+
+  const char *name_;
+  int unsupported_;
+  ContactPatchWriter patch;
+};
+
+}
+}
+#endif
