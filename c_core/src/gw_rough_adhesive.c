@@ -96,7 +96,9 @@ static void panel(acc_t *q, int map, double ta, double tb)
     dc_jkr_state st;
     const int r = dc_jkr_contact(q->g, q->uo + q->sigma * t, &q->hint, &st);
     q->n_eval++;
-    if (r != DC_OK) q->status = r;
+    /* a summit's failure; its compression can only be non-finite (EDOM
+       from the summit law) by overflowing */
+    if (r != DC_OK && q->status != DC_ERANGE) q->status = r == DC_EDOM ? DC_ERANGE : r;
     const double wgt = dt * gauss_factor(q->s0, q->so, t);
     fv[i] = wgt * st.F;
     F += WK[i] * fv[i];
@@ -120,8 +122,19 @@ static void panel(acc_t *q, int map, double ta, double tb)
   q->E += hw * err;
 }
 
+/* The state is written on DC_OK and DC_ENOCONV (the last iterate), and
+   only if finite: otherwise DC_ERANGE, output untouched. */
+static int finish(int st, const dc_gw_adhesive_state *s, dc_gw_adhesive_state *out)
+{
+  if (!(isfinite(s->F) && isfinite(s->area) && isfinite(s->kn) && isfinite(s->h) && isfinite(s->err)))
+    st = DC_ERANGE;
+  if (st != DC_OK && st != DC_ENOCONV) return st;
+  *out = *s;
+  return st;
+}
+
 int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, double delta,
-                         int branch, dc_gw_adhesive_state *s)
+                         int branch, dc_gw_adhesive_state *out)
 {
   if (!(n_asp > 0.0 && isfinite(n_asp) && sigma >= 0.0 && isfinite(sigma) && isfinite(delta) &&
         (branch == DC_GW_LOADING || branch == DC_GW_UNLOADING)))
@@ -131,10 +144,11 @@ int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, doubl
     dc_gw_rough_state rs;
     const int r = dc_gw_rough_elliptic(&g->hertz, g->Estar, n_asp, sigma, delta, &rs);
     if (r != DC_OK) return r;
-    s->F = rs.F; s->area = rs.area; s->kn = rs.kn; s->h = rs.h;
-    s->err = 0.0; s->n_eval = 0;
+    out->F = rs.F; out->area = rs.area; out->kn = rs.kn; out->h = rs.h;
+    out->err = 0.0; out->n_eval = 0;
     return DC_OK;
   }
+  dc_gw_adhesive_state res, *s = &res;
   const double u0 = branch == DC_GW_LOADING ? 0.0 : g->delta_break;
   const double s0 = (u0 - delta) / sigma;
   if (sigma == 0.0 || !isfinite(s0)) {
@@ -142,12 +156,13 @@ int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, doubl
     s->F = s->area = s->kn = s->err = 0.0;
     s->h = delta > 0.0 ? -1e300 : 1e300;
     s->n_eval = 0;
-    if (delta < u0) return DC_OK;
+    if (delta < u0) return finish(DC_OK, s, out);
     dc_jkr_state st;
     const int r = dc_jkr_contact(g, delta, NULL, &st);
+    if (r != DC_OK && r != DC_ENOCONV) return r;
     s->n_eval = 1;
     s->F = n_asp * st.F; s->area = n_asp * st.area; s->kn = n_asp * st.kn;
-    return r;
+    return finish(r, s, out);
   }
   const double h = -delta / sigma;
   s->h = isfinite(h) ? h : (h > 0.0 ? 1e300 : -1e300);
@@ -155,7 +170,7 @@ int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, doubl
   s->n_eval = 0;
   const double sr = s0 > 0.0 ? s0 : 0.0;
   const double scale = exp(-0.5 * sr * sr) * 0.39894228040143267794;   /* phi(sr) */
-  if (!(scale > 0.0)) return DC_OK;   /* every summit far apart */
+  if (!(scale > 0.0)) return finish(DC_OK, s, out);   /* every summit far apart */
   const double cut = sqrt(CUT2);
   const double x_hi = sqrt(sr * sr + CUT2) - s0;
   const double x_lo = s0 < -cut ? -cut - s0 : 0.0;
@@ -215,11 +230,11 @@ int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, doubl
       dc_jkr_state st;
       const int r = dc_jkr_contact(g, 0.0, NULL, &st);
       q.n_eval++;
-      if (r != DC_OK) q.status = r;
+      if (r != DC_OK && q.status != DC_ERANGE) q.status = r;
       f0 = st.F;
     }
     s->kn += n_asp * scale * gauss_factor(s0, s0, 0.0) * f0 / sigma;
   }
   s->n_eval = q.n_eval;
-  return q.status;
+  return finish(q.status, s, out);
 }

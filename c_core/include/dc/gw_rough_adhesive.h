@@ -100,7 +100,9 @@ typedef struct {
    g: from dc_jkr_geometry (summit radii, Estar, w), computed once per
    contact. Domain: n_asp > 0, sigma >= 0, delta, all finite; branch
    DC_GW_LOADING or DC_GW_UNLOADING; else DC_EDOM (state untouched).
-   DC_ENOCONV if a summit solve did not converge (state filled). */
+   DC_ENOCONV if a summit solve did not converge (state filled).
+   DC_ERANGE, state untouched, when F, kn, the area or a summit state
+   overflows (a summit's compression delta + sigma s included). */
 int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, double delta,
                          int branch, dc_gw_adhesive_state *s);
 
