@@ -73,3 +73,17 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
   *out = s;
   return DC_OK;
 }
+
+int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, double F, double kn, dc_contact *c)
+{
+  if (!(isfinite(F) && isfinite(kn))) return DC_EDOM;
+  dc_contact smooth;
+  const int st = dc_hertz_normal(g, Estar, delta, &smooth);
+  if (st != DC_OK) return st;
+  *c = smooth;
+  c->F = F;
+  c->kn = kn;
+  c->F_bound = F > 0.0 ? F : 0.0;
+  c->formed = F > 0.0;
+  return DC_OK;
+}

@@ -147,3 +147,22 @@ int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta, dc_hert
   *s = h;
   return DC_OK;
 }
+
+int dc_hertz_normal(const dc_hertz_geom *g, double Estar, double delta, dc_contact *c)
+{
+  dc_hertz_state s = {0.0, 0.0, 0.0, 0.0, 0.0};
+  if (!isfinite(delta)) return DC_EDOM;
+  if (delta > 0.0) {
+    const int st = dc_hertz_contact(g, Estar, delta, &s);
+    if (st != DC_OK) return st;
+  } else if (!(Estar > 0.0 && isfinite(Estar))) {
+    return DC_EDOM;
+  }
+  c->F = c->F_bound = s.F;
+  c->kn = s.kn;
+  c->area = s.area;
+  c->a = s.a;
+  c->b = s.b;
+  c->formed = delta > 0.0;
+  return DC_OK;
+}

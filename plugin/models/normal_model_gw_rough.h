@@ -181,31 +181,12 @@ private:
       if (delta > 0.0) kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(g.R_area * delta));
     }
     applyForce(sidata, P, vn, Sn, kn, kt, i_forces, j_forces);
-    if (ax) publishPatch(sidata, g, sq, delta, P, Sn, ax);
-  }
-
-  /* The smooth contact's ellipse at max(delta, 0) with the rough force. */
-  void publishPatch(SurfacesCloseData &d, const dc_hertz_geom &g, bool sq, double delta, double P, double Sn,
-                    const double *axis)
-  {
-    dc_contact c;
-    c.a = c.b = 0.0;
-    if (delta > 0.0) {
-      if (sq) {
-        dc_hertz_state s;
-        dc_hertz_contact(&g, Yeff[d.itype][d.jtype], delta, &s);
-        c.a = s.a;
-        c.b = s.b;
-      } else {
-        c.a = c.b = sqrt(g.R_force * delta);
-      }
+    if (ax) {
+      if (!sq && !(gwElliptic && sigma != 0.0)) hertzGeometry(reff, reff, g);  /* spheres: only R_force, R_area were set */
+      dc_contact c;
+      dc_gw_rough_normal(&g, Y, delta, P, Sn, &c);
+      publish(sidata, c, ax);
     }
-    c.F = P;
-    c.F_bound = P > 0.0 ? P : 0.0;
-    c.kn = Sn;
-    c.area = M_PI * c.a * c.b;
-    c.formed = 1;
-    publish(d, c, axis);
   }
 
   static MatrixProperty *createRoughness(PropertyRegistry &registry, const char *caller, bool)

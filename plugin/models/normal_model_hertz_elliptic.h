@@ -50,8 +50,6 @@ public:
       hertzGeometry(R_major, R_minor, g);
       r_force = g.R_force;
       r_area = g.R_area;
-    } else if (ax) {
-      ax[0] = ax[1] = ax[2] = 0.0;
     }
     double kn, Sn;
     const double root = dc_hertz_stiffness(Yeff[itype][jtype], r_force, deltan, &kn, &Sn);
@@ -59,18 +57,9 @@ public:
     const double P = kn * deltan;
     applyForce(sidata, P, sidata.vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) {
+      if (!sq) hertzGeometry(r_force, r_force, g);
       dc_contact c;
-      c.a = c.b = root;
-      if (sq) {
-        dc_hertz_state s;
-        dc_hertz_contact(&g, Yeff[itype][jtype], deltan, &s);
-        c.a = s.a;
-        c.b = s.b;
-      }
-      c.F = c.F_bound = P;
-      c.kn = Sn;
-      c.area = M_PI * r_area * deltan;
-      c.formed = 1;
+      dc_hertz_normal(&g, Yeff[itype][jtype], deltan, &c);
       publish(sidata, c, ax);
     }
   }

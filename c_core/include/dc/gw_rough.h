@@ -56,6 +56,13 @@ static inline double dc_gw_roughness_combine(double sigma_i, double sigma_j)
   return sqrt(sigma_i * sigma_i + sigma_j * sigma_j);
 }
 
+/* The law contract's output (dc/contract.h) of a rough contact with force
+   F and stiffness kn at overlap delta (any finite sign): the nominal
+   (smooth) contact ellipse of geometry g at max(delta, 0), its area, formed
+   while the rough force acts (F > 0), friction load max(F, 0). DC_EDOM for
+   non-finite inputs or Estar <= 0 (c untouched). */
+int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, double F, double kn, dc_contact *c);
+
 #ifdef __cplusplus
 }
 #endif

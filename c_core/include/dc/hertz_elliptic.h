@@ -29,6 +29,7 @@
 #define DC_HERTZ_ELLIPTIC_H
 
 #include <math.h>
+#include "dc/contract.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -94,6 +95,12 @@ static inline double dc_hertz_stiffness(double Estar, double R_force, double del
   *kn = 4. / 3. * Estar * root;
   return root;
 }
+
+/* The law contract's output (dc/contract.h) at overlap delta: force,
+   tangent stiffness, area, semi-axes, friction load = force; delta <= 0
+   (finite) gives formed = 0 and zeros. Same domain as dc_hertz_contact
+   otherwise; DC_EDOM leaves c untouched. */
+int dc_hertz_normal(const dc_hertz_geom *g, double Estar, double delta, dc_contact *c);
 
 #ifdef __cplusplus
 }
