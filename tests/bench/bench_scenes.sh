@@ -6,6 +6,9 @@
 # round-robin REPS times (so that a slow spell of the machine hits all of
 # them alike) and the fastest run of each is kept. Prints figures, asserts
 # nothing. Usage: bash tests/bench/bench_scenes.sh [REPS]
+# With DC_BENCH_BASELINE=/path/to/another/liggghts every configuration also
+# runs with that executable in the same round-robin, and a last table gives
+# each configuration's time against it (before/after a change).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lmp="$root/build/bin/liggghts"
@@ -33,18 +36,23 @@ configs=(
   "qe|$sq|hertz_elliptic|15000|1|"
   "q2|$sq|hertz_elliptic|15000|2|"
 )
+base=${DC_BENCH_BASELINE:-}
 declare -A best
 for r in $(seq "$reps"); do
   for c in "${configs[@]}"; do
     IFS='|' read -r name deck model steps ranks extra <<< "$c"
-    d="$work/${name}_$r"; mkdir -p "$d"; cd "$d"
-    if [ "$ranks" -gt 1 ]; then
-      mpirun -np "$ranks" "$lmp" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
-    else
-      "$lmp" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
-    fi
-    t=$(awk '/^Loop time of/ {print $4}' log)
-    best[$name]=$(python3 -c "print(min(float('$t'), float('${best[$name]:-1e300}')))")
+    for which in new ${base:+base}; do
+      exe=$lmp; key=$name
+      [ "$which" = base ] && { exe=$base; key="base_$name"; }
+      d="$work/${key}_$r"; mkdir -p "$d"; cd "$d"
+      if [ "$ranks" -gt 1 ]; then
+        mpirun -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+      else
+        "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+      fi
+      t=$(awk '/^Loop time of/ {print $4}' log)
+      best[$key]=$(python3 -c "print(min(float('$t'), float('${best[$key]:-1e300}')))")
+    done
   done
 done
 t_sh=${best[sh]} t_se=${best[se]} t_sr=${best[sr]} t_sj=${best[sj]} t_sh5=${best[sh5]} t_se2=${best[se2]}
@@ -64,3 +72,11 @@ print("    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: her
       "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2))
 print("324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2))
 PY
+if [ -n "$base" ]; then
+  echo
+  echo "configuration        baseline       this build     ratio (best of $reps, same round-robin)"
+  for c in "${configs[@]}"; do
+    IFS='|' read -r name deck model steps ranks extra <<< "$c"
+    python3 -c "print('%-20s %9.3f s    %9.3f s     %.4f' % ('$name $model', ${best[base_$name]}, ${best[$name]}, ${best[$name]} / ${best[base_$name]}))"
+  done
+fi
