@@ -3,6 +3,7 @@
 #include "dc/dissipation_adhesive.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 
 /* Corrected Eqs. 39-40: F_dis = A ddelta k_punch, k_punch = pi E* a/K(e^2). */
@@ -16,10 +17,19 @@ int dc_dissip_adhesive_ab(double A, double Estar, double a, double b, double dde
     k = 2.0 * Estar * a;
   } else {
     const double g = b / a;
-    dc_ellint el;
-    const int st = dc_ellint_m1(g * g, &el);
-    if (st != DC_OK) return st;
-    k = M_PI * Estar * a / el.K;
+    double K;
+    if (g * g >= DBL_MIN) {
+      dc_ellint el;
+      const int st = dc_ellint_m1(g * g, &el);
+      if (st != DC_OK) return st;
+      K = el.K;
+    } else {
+      /* (b/a)^2 is not a normal number (b/a < 1.5e-154): K(m1) = ln(4/m1^1/2)
+         + O(m1 ln m1) = ln(4 a/b) to rounding, from the logarithms of a and
+         b themselves (b/a may underflow) */
+      K = 2.0 * M_LN2 + (log(a) - log(b));
+    }
+    k = M_PI * Estar * a / K;
   }
   const double F = A * ddelta * k;
   if (!isfinite(F)) return DC_ERANGE;
@@ -31,7 +41,9 @@ int dc_dissip_adhesive_ab(double A, double Estar, double a, double b, double dde
 int dc_dissip_adhesive_state(double A, double Estar, const dc_jkr_state *s, double ddelta, double *F_dis)
 {
   if (!(A >= 0.0 && isfinite(A) && Estar > 0.0 && isfinite(Estar) && isfinite(ddelta))) return DC_EDOM;
-  if (!s->contact || !(s->a > 0.0)) { *F_dis = 0.0; return DC_OK; }
+  if (!s->contact) { *F_dis = 0.0; return DC_OK; }
+  if (!(isfinite(s->a) && isfinite(s->b))) return DC_EDOM;
+  if (!(s->a > 0.0)) { *F_dis = 0.0; return DC_OK; }   /* touching: a = 0, k_punch = 0 */
   return dc_dissip_adhesive_ab(A, Estar, s->a, s->b > 0.0 ? s->b : s->a, ddelta, F_dis);
 }
 
@@ -53,11 +65,18 @@ int dc_dissip_adhesive_radius_rate(double A, double R, double Estar, double w, d
 int dc_jkr_sphere_viscoelastic(double R, double Estar, double w, double A, double delta, double ddelta,
                                dc_jkr_state *s, double *F_total)
 {
-  int st = dc_jkr_sphere(R, Estar, w, delta, s);
+  /* A and ddelta first: a non-finite one is DC_EDOM whatever the state */
+  if (!(A >= 0.0 && isfinite(A) && isfinite(ddelta))) return DC_EDOM;
+  /* into a local state: an error leaves *s and *F_total untouched */
+  dc_jkr_state t;
+  int st = dc_jkr_sphere(R, Estar, w, delta, &t);
   if (st != DC_OK) return st;
   double Fd;
-  st = dc_dissip_adhesive_state(A, Estar, s, ddelta, &Fd);
+  st = dc_dissip_adhesive_state(A, Estar, &t, ddelta, &Fd);
   if (st != DC_OK) return st;
-  *F_total = s->F + Fd;
+  const double F = t.F + Fd;
+  if (!isfinite(F)) return DC_ERANGE;
+  *s = t;
+  *F_total = F;
   return DC_OK;
 }

@@ -202,13 +202,32 @@ static int find_extremum(const dc_jkr_geom *G, int which, double vmin, double vm
   return ext_root(&e, vmin, vmax, flo, fhi, root, p);
 }
 
-int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G)
+/* The geometry is built in a local copy and handed out only when every
+   double of it is finite: on any error *out is untouched. */
+static int geometry_done(const dc_jkr_geom *G, dc_jkr_geom *out)
+{
+  const dc_hertz_geom *h = &G->hertz;
+  const double v[] = {G->R_major, G->R_minor, G->Rhat, G->lambda, G->lam2, G->l2c, G->Estar, G->w,
+                      h->R_major, h->R_minor, h->Rc, h->e2, h->m1, h->K, h->E, h->D, h->gamma, h->beta,
+                      h->R_force, h->R_area, G->e2_hertz, G->a_scale, G->delta_scale, G->F_scale,
+                      G->e2_break, G->delta_break, G->F_break, G->dbar_break, G->e2_pull, G->delta_pull,
+                      G->F_pull, G->guess_c1, G->guess_c2, G->pert_X0, G->pert_X1, G->pert_g0, G->pert_g1,
+                      G->pert_P0, G->pert_P1, G->pert_rho0, G->dbar_switch, G->v_hertz, G->v_break};
+  for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
+    if (!isfinite(v[i])) return DC_ERANGE;
+  *out = *G;
+  return DC_OK;
+}
+
+int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *out)
 {
   if (!(R1 > 0.0 && R2 > 0.0 && isfinite(R1) && isfinite(R2) && Estar > 0.0 && isfinite(Estar) &&
         w >= 0.0 && isfinite(w)))
     return DC_EDOM;
   const double Rmaj = fmax(R1, R2), Rmin = fmin(R1, R2);
   if (Rmin / Rmaj < DC_JKR_RATIO_MIN) return DC_EDOM;
+  dc_jkr_geom geom;
+  dc_jkr_geom *const G = &geom;
   memset(G, 0, sizeof *G);
   G->R_major = Rmaj;
   G->R_minor = Rmin;
@@ -226,15 +245,15 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   if (!hertz_ok) memset(&G->hertz, 0, sizeof G->hertz);
   G->e2_hertz = G->hertz.e2;
   G->circular = G->l2c < DC_JKR_CIRCULAR_TOL;
-  G->a_scale = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), G->Rhat * G->Rhat);
-  G->delta_scale = G->a_scale * G->a_scale / (2.0 * G->Rhat);
+  G->a_scale = dc_jkr_length_scale_(w, Estar, G->Rhat);
+  G->delta_scale = dc_jkr_delta_scale_(G->a_scale, G->Rhat);
   G->F_scale = 8.0 * w * G->Rhat;
-  if (!(G->delta_scale > 0.0)) {  /* w = 0 (or w/E* so small it underflows) */
+  if (!(G->delta_scale > 0.0)) {  /* w = 0 (or so small that the overlap scale underflows) */
     if (!hertz_ok) return st;
     G->w = 0.0;
     G->a_scale = G->delta_scale = G->F_scale = 0.0;
     G->e2_break = G->e2_pull = G->e2_hertz;
-    return DC_OK;
+    return geometry_done(G, out);
   }
   if (G->circular) {
     const double R = G->Rhat;
@@ -244,7 +263,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
     /* pull-off at a^3 = 9 pi w R^2/(8 E*): delta = a^2/R - (2 pi w a/E*)^1/2 */
     const double ap = cbrt(9.0 * M_PI * w * R * R / (8.0 * Estar));
     G->delta_pull = ap * ap / R - sqrt(2.0 * M_PI * w * ap / Estar);
-    return DC_OK;
+    return geometry_done(G, out);
   }
   /* Solver variable v (e^2, or 1 - e^2 for slender contacts), and the
      Hertz state as the zero of Qn (dc_jkr_Qn_) by Newton's method. Start:
@@ -317,7 +336,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *G
   const double dp = G->delta_pull / G->delta_scale - dbar_b;
   const double need = span / fabs(vH - vp) - 1.0 - G->guess_c2 * sqrt(dp) * sqrt(sqrt(dp));
   G->guess_c1 = need > 0.0 ? need / sqrt(dp) : 0.0;
-  return DC_OK;
+  return geometry_done(G, out);
 }
 
 void dc_jkr_elliptic_fill_(const dc_jkr_geom *G, const jg_point *p, double s_m, dc_jkr_state *s)
@@ -337,15 +356,44 @@ void dc_jkr_elliptic_fill_(const dc_jkr_geom *G, const jg_point *p, double s_m, 
   s->kn = dc_jkr_finite_kn_(sg * G->F_scale * p->dPbar, sg * G->delta_scale * p->ddbar);
 }
 
+/* Below e^2 = E2_SMALL (1 - lambda^2) the forward map is taken in its
+   leading order in e^2: the relative corrections are O(e^2) and O(e^2/(1 -
+   lambda^2)) (the m (D - C) term of Qn against l2c B), both below 1e-20;
+   it keeps rho ~ 1/e^2 and its square out of overflow. */
+#define E2_SMALL 1e-20
+
 int dc_jkr_at_eccentricity(const dc_jkr_geom *G, double e2, dc_jkr_state *s)
 {
   if (G->circular || G->w == 0.0 || !(e2 > 0.0 && e2 < G->e2_hertz)) return DC_EDOM;
-  jg_point p;
-  const double sg = G->use_m1 ? -1.0 : 1.0;
-  jg_eval(G, G->use_m1 ? 1.0 - e2 : e2, &p);
-  if (!(p.rho > 0.0)) return DC_ERANGE;
-  dc_jkr_elliptic_fill_(G, &p, 0.0, s);
-  if (sg * p.ddbar <= 0.0) s->kn = dc_jkr_finite_kn_(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
+  dc_jkr_state t;
+  if (e2 < E2_SMALL * G->l2c) {
+    /* m -> 0: K, D, B, C -> pi/2, pi/4, pi/4, pi/16, Delta -> 3 pi^2/32,
+       Q -> l2c pi/(4 lambda Delta), u -> m/4, so rho = r1/m with r1 =
+       32 l2c/(3 pi lambda); X = -pi r1/m, Y = -r1/m, and abar = (m/r1)^2/3,
+       dbar = -pi (m/r1)^1/3, Pbar = -m/r1, each to a relative O(m). With
+       c = (m/r1)^1/3 (no power of m that could underflow):
+       kn = F_scale Pbar'/(delta_scale dbar') = 3 F_scale c^2/(pi delta_scale). */
+    const double r1 = 32.0 / (3.0 * M_PI) * G->l2c / G->lambda;
+    const double c = cbrt(e2) / cbrt(r1), abar = c * c;
+    t.contact = 1;
+    t.a = t.b = G->a_scale * abar;
+    t.area = M_PI * t.a * t.b;
+    t.e2 = e2;
+    t.F = -G->F_scale * (e2 / r1);
+    t.delta = -M_PI * G->delta_scale * c;
+    t.kn = 3.0 * G->F_scale * abar / (M_PI * G->delta_scale);
+  } else {
+    /* at m = e2 itself (for slender contacts, v = 1 - e2 would round e2
+       below 1/2 to the spacing of the doubles near 1) */
+    jg_point p;
+    const double sg = G->use_m1 ? -1.0 : 1.0;
+    dc_jkr_eval_m_(G, e2, 1.0 - e2, sg, &p);
+    if (!(p.rho > 0.0)) return DC_ERANGE;   /* e2 within rounding of e2_hertz: a -> oo */
+    dc_jkr_elliptic_fill_(G, &p, 0.0, &t);
+    if (sg * p.ddbar <= 0.0) t.kn = dc_jkr_finite_kn_(-sg * G->F_scale * p.dPbar, -sg * G->delta_scale * p.ddbar);
+  }
+  if (!dc_jkr_state_finite_(&t)) return DC_ERANGE;
+  *s = t;
   return DC_OK;
 }
 

@@ -33,6 +33,7 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
     dc_hertz_state h;
     int st = dc_hertz_contact(&G->hertz, G->Estar, delta, &h);
     if (st != DC_OK) return st;
+    if (!(isfinite(h.F) && isfinite(h.a) && isfinite(h.b) && isfinite(h.area) && isfinite(h.kn))) return DC_ERANGE;
     s->contact = 1; s->F = h.F; s->delta = delta; s->a = h.a; s->b = h.b;
     s->area = h.area; s->e2 = G->e2_hertz; s->kn = h.kn;
     return DC_OK;
@@ -47,25 +48,31 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
     const double X = G->pert_X0 + G->pert_X1 * rho;
     const double g = G->pert_g0 + G->pert_g1 * rho;
     const double Fd = G->F_scale * dbar_t * sqrt(dbar_t);
-    s->contact = 1;
-    s->delta = delta;
-    s->F = Fd * (G->pert_P0 + G->pert_P1 * rho);
-    s->a = G->a_scale * sqrt(dbar_t / X);
-    s->b = g * s->a;
-    s->area = M_PI * s->a * s->b;
-    s->e2 = (1.0 - g) * (1.0 + g);
-    s->kn = (1.5 * s->F - 0.75 * Fd * G->pert_P1 * rho) / delta;
-    if (hint) { hint->v = G->use_m1 ? g * g : s->e2; hint->dudL = 0.0; }
+    dc_jkr_state t;
+    t.contact = 1;
+    t.delta = delta;
+    t.F = Fd * (G->pert_P0 + G->pert_P1 * rho);
+    t.a = G->a_scale * sqrt(dbar_t / X);
+    t.b = g * t.a;
+    t.area = M_PI * t.a * t.b;
+    t.e2 = (1.0 - g) * (1.0 + g);
+    t.kn = (1.5 * t.F - 0.75 * Fd * G->pert_P1 * rho) / delta;
+    if (!dc_jkr_state_finite_(&t)) return DC_ERANGE;
+    *s = t;
+    if (hint) { hint->v = G->use_m1 ? g * g : t.e2; hint->dudL = 0.0; }
     return DC_OK;
   }
   const double vH = G->v_hertz, vb = G->v_break;
   jg_point p;
   const double dbar_b = G->dbar_break;
   const double dtarget = dbar_t - dbar_b;
+  dc_jkr_state t;
   if (!(dtarget > 0.0)) {   /* exactly at the separation point */
     jg_eval(G, vb, &p);
-    dc_jkr_elliptic_fill_(G, &p, 0.0, s);
-    s->delta = delta;
+    dc_jkr_elliptic_fill_(G, &p, 0.0, &t);
+    t.delta = delta;
+    if (!dc_jkr_state_finite_(&t)) return DC_ERANGE;
+    *s = t;
     if (hint) { hint->v = vb; hint->dudL = 0.0; }
     return DC_OK;
   }
@@ -110,8 +117,10 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
     const double scale = fmin(fabs(vH - v), fabs(v - vb));
     const double tol_v = fmax(1e-8 * scale, 16.0 * DBL_EPSILON * (fabs(vH) + fabs(dbar_b / p.ddbar)));
     if (fabs(step) <= tol_v || fabs(hi - lo) <= 4.0 * DBL_EPSILON * fabs(v)) {
-      dc_jkr_elliptic_fill_(G, &p, lin, s);
-      s->delta = delta;
+      dc_jkr_elliptic_fill_(G, &p, lin, &t);
+      t.delta = delta;
+      if (!dc_jkr_state_finite_(&t)) return DC_ERANGE;
+      *s = t;
       if (hint) set_hint(hint, v + lin, vb, vH, Lt, dtarget, p.ddbar);
       return DC_OK;
     }
@@ -128,9 +137,13 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
     if (!((vn - lo) * (vn - hi) < 0.0)) vn = 0.5 * (lo + hi);
     v = vn;
   }
+  /* not converged: the last iterate (status.h), if it is finite */
   jg_eval(G, v, &p);
-  dc_jkr_elliptic_fill_(G, &p, (dbar_t - p.dbar) / p.ddbar, s);
-  s->delta = delta;
-  if (hint) { hint->v = v; hint->dudL = 0.0; }
+  dc_jkr_elliptic_fill_(G, &p, (dbar_t - p.dbar) / p.ddbar, &t);
+  t.delta = delta;
+  if (dc_jkr_state_finite_(&t)) {
+    *s = t;
+    if (hint) { hint->v = v; hint->dudL = 0.0; }
+  }
   return DC_ENOCONV;
 }

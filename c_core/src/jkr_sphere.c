@@ -3,28 +3,31 @@
    derivation is in dc/jkr_elliptic.h). */
 #include "dc/jkr_sphere.h"
 #include "dc/status.h"
-#include "jkr_cbrt.h"
 #include "jkr_private.h"
+#include <float.h>
 #include <math.h>
 
 /* Units: C1 = 8 w R^2/(pi E*), a = C1^1/3 x^2, delta = C1^2/3/(2R) dbar,
    F = 8 w R Fbar. With rho = x^-3 the elliptic formulas at g = 1 give
      dbar = 2 x^4 - pi x,   Fbar = 4/(3 pi) x^6 - x^3.                  */
 
-static void sphere_fill(double R, double Estar, double w, double a, dc_jkr_state *s)
+/* The state at contact radius a > 0 in *t (delta from a); DC_ERANGE when
+   a double of it overflows. */
+static int sphere_fill(double R, double Estar, double w, double a, dc_jkr_state *t)
 {
   /* q = (2 pi w a/E*)^1/2: F = 4 E* a^3/(3R) - 2 E* a q, delta = a^2/R - q */
   const double q = sqrt(2.0 * M_PI * w * a / Estar);
-  s->contact = 1;
-  s->a = s->b = a;
-  s->area = M_PI * a * a;
-  s->e2 = 0.0;
-  s->F = 4.0 * Estar * a * a * a / (3.0 * R) - 2.0 * Estar * a * q;
-  s->delta = a * a / R - q;
+  t->contact = 1;
+  t->a = t->b = a;
+  t->area = M_PI * a * a;
+  t->e2 = 0.0;
+  t->F = 4.0 * Estar * a * a * a / (3.0 * R) - 2.0 * Estar * a * q;
+  t->delta = a * a / R - q;
   /* dF/da = 4 E* a^2/R - 3 E* q, d delta/da = 2a/R - q/(2a) */
   const double num = 4.0 * Estar * a * a / R - 3.0 * Estar * q;
   const double den = 2.0 * a / R - 0.5 * q / a;
-  s->kn = dc_jkr_finite_kn_(num, den);
+  t->kn = dc_jkr_finite_kn_(num, den);
+  return dc_jkr_state_finite_(t) ? DC_OK : DC_ERANGE;
 }
 
 int dc_jkr_sphere_at_radius(double R, double Estar, double w, double a, dc_jkr_state *s)
@@ -32,15 +35,45 @@ int dc_jkr_sphere_at_radius(double R, double Estar, double w, double a, dc_jkr_s
   if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && a > 0.0 && isfinite(R) && isfinite(Estar) &&
         isfinite(w) && isfinite(a)))
     return DC_EDOM;
-  sphere_fill(R, Estar, w, a, s);
-  return DC_OK;
+  dc_jkr_state t;
+  const int st = sphere_fill(R, Estar, w, a, &t);
+  if (st == DC_OK) *s = t;
+  return st;
 }
 
-double dc_jkr_sphere_pulloff(double R, double w) { return 1.5 * M_PI * w * R; }
+/* The two closed forms are evaluated as written when every intermediate is
+   a normal number (so they agree to the last bit with the separation test
+   of dc_jkr_sphere and with earlier versions); otherwise from the binary
+   mantissas and exponents of the arguments (frexp, ldexp), free of
+   intermediate overflow and underflow: the result is then infinite or zero
+   only when it does not fit in a double itself. */
+double dc_jkr_sphere_pulloff(double R, double w)
+{
+  if (!(R > 0.0 && w >= 0.0 && isfinite(R) && isfinite(w))) return NAN;
+  if (w == 0.0) return 0.0;
+  const double a1 = 1.5 * M_PI * w, p = a1 * R;
+  if (a1 >= DBL_MIN && a1 <= DBL_MAX && p >= DBL_MIN && p <= DBL_MAX) return p;
+  int ew, eR;
+  const double wm = frexp(w, &ew), Rm = frexp(R, &eR);
+  return ldexp(1.5 * M_PI * wm * Rm, ew + eR);
+}
 
 double dc_jkr_sphere_delta_break(double R, double Estar, double w)
 {
-  return -0.75 * cbrt(M_PI * M_PI * w * w * R / (Estar * Estar));
+  if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && isfinite(R) && isfinite(Estar) && isfinite(w))) return NAN;
+  if (w == 0.0) return -0.0;
+  /* -3/4 (pi^2 w^2 R / E*^2)^1/3, the left-to-right products of that form */
+  const double a1 = M_PI * M_PI * w * w, n1 = a1 * R, d1 = Estar * Estar, t = n1 / d1;
+  if (a1 >= DBL_MIN && a1 <= DBL_MAX && n1 >= DBL_MIN && n1 <= DBL_MAX && d1 >= DBL_MIN && d1 <= DBL_MAX &&
+      t >= DBL_MIN && t <= DBL_MAX)
+    return -0.75 * cbrt(t);
+  int ew, eR, eE;
+  const double wm = frexp(w, &ew), Rm = frexp(R, &eR), Em = frexp(Estar, &eE);
+  int e = 2 * ew + eR - 2 * eE;
+  const int r = ((e % 3) + 3) % 3;          /* e - r divisible by 3 */
+  e -= r;
+  const double tm = ldexp(M_PI * M_PI * wm * wm * Rm / (Em * Em), r);
+  return -0.75 * ldexp(cbrt(tm), e / 3);
 }
 
 int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s)
@@ -48,8 +81,11 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && isfinite(R) && isfinite(Estar) && isfinite(w) &&
         isfinite(delta)))
     return DC_EDOM;
-  const double As = dc_jkr_cbrt_scale_(8.0 * w / (M_PI * Estar), R * R);
-  const double Ds = As * As / (2.0 * R);
+  const double As = dc_jkr_length_scale_(w, Estar, R);
+  const double Ds = dc_jkr_delta_scale_(As, R);
+  /* the adhesion scale itself overflows (w/E* and R far beyond physical
+     magnitudes): no state can be computed */
+  if (!(Ds <= DBL_MAX)) return DC_ERANGE;
   if (!(Ds > 0.0) || delta > 1e10 * Ds) {
     /* Hertz-dominated (or w = 0): a^2 = R (delta + (2 pi w a/E*)^1/2).
        With a0 = (R delta)^1/2 and t0 = (2 pi w a0/E*)^1/2/delta ~ dbar^-3/4
@@ -61,10 +97,18 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
       if (w == 0.0) s->contact = 1;
       return DC_OK;
     }
-    const double a0 = sqrt(R * delta);
+    const double Rd = R * delta;
+    const double a0 = Rd >= DBL_MIN && Rd <= DBL_MAX ? sqrt(Rd) : sqrt(R) * sqrt(delta);
     const double a = a0 + 0.5 * a0 * sqrt(2.0 * M_PI * w * a0 / Estar) / delta;
-    sphere_fill(R, Estar, w, a, s);
-    s->delta = delta;
+    if (!(a > 0.0)) {   /* R delta underflows: every quantity rounds to 0 */
+      dc_jkr_zero_state_(delta, s);
+      s->contact = 1;
+      return DC_OK;
+    }
+    dc_jkr_state t;
+    if (sphere_fill(R, Estar, w, a, &t) != DC_OK) return DC_ERANGE;
+    t.delta = delta;
+    *s = t;
     return DC_OK;
   }
   /* With x = x_b (1 + y), x_b^3 = pi/8 (the separation point), the quartic
@@ -103,16 +147,19 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   const double x = xb + xb * y;
   const double c = (1.0 + y) * (1.0 + y) * (1.0 + y);   /* 8 x^3 / pi */
   const double a = As * x * x;
-  s->contact = 1;
-  s->a = s->b = a;
-  s->area = M_PI * a * a;
-  s->e2 = 0.0;
-  s->delta = delta;
+  dc_jkr_state t;
+  t.contact = 1;
+  t.a = t.b = a;
+  t.area = M_PI * a * a;
+  t.e2 = 0.0;
+  t.delta = delta;
   /* F = 8 w R (4/(3 pi) x^3 - 1) x^3 = pi w R c (c/6 - 1) */
-  s->F = M_PI * w * R * c * (c / 6.0 - 1.0);
+  t.F = M_PI * w * R * c * (c / 6.0 - 1.0);
   /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)),
      with 8x^3/pi - 1 = y (3 + 3y + y^2) free of cancellation at the
      separation point */
-  s->kn = dc_jkr_finite_kn_(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
+  t.kn = dc_jkr_finite_kn_(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
+  if (!dc_jkr_state_finite_(&t)) return DC_ERANGE;
+  *s = t;
   return DC_OK;
 }

@@ -1,13 +1,15 @@
 /* Unit tests of c_core/src/dissipation_adhesive.c (corrected review Eqs.
    39-40): the w -> 0 limit against review Eq. 37, units (scaling), finiteness
-   on the whole JKR branch including delta <= 0, and the contact-radius form
-   against finite differences of a(t) along a trajectory. */
+   on the whole JKR branch including delta <= 0, the contact-radius form
+   against finite differences of a(t) along a trajectory, and the status
+   contract (errors leave the outputs untouched). */
 #include "check.h"
 #include "dc/dissipation_adhesive.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/status.h"
 #include <math.h>
+#include <string.h>
 
 static const double R = 1e-3, E = 1e9, w = 0.05, A = 2e-6;
 
@@ -113,10 +115,62 @@ static void test_branch_and_radius_form(void)
   CHECK(dc_dissip_adhesive_ab(A, E, 1e-6, 1e-6, NAN, &Fd) == DC_EDOM);
 }
 
+/* Status honesty: an error leaves every output untouched (a viscoelastic
+   call used to write the state and then fail on A), a non-finite input is
+   DC_EDOM, and overflow is DC_ERANGE, never DC_OK with inf or NaN. */
+static void test_status(void)
+{
+  dc_jkr_state s, s0;
+  memset(&s0, 0xA5, sizeof s0);
+  double Ft, Fd;
+  const double F0 = -123.0;
+  /* bad A after a good state: DC_EDOM, state and total untouched */
+  const double bad_A[] = {-1.0, NAN, INFINITY};
+  for (int i = 0; i < 3; i++) {
+    s = s0;
+    Ft = F0;
+    CHECK(dc_jkr_sphere_viscoelastic(R, E, w, bad_A[i], 1e-9, 0.1, &s, &Ft) == DC_EDOM);
+    CHECK(memcmp(&s, &s0, sizeof s) == 0 && Ft == F0);
+  }
+  s = s0;
+  Ft = F0;
+  CHECK(dc_jkr_sphere_viscoelastic(R, E, w, A, 1e-9, NAN, &s, &Ft) == DC_EDOM);
+  CHECK(dc_jkr_sphere_viscoelastic(-R, E, w, A, 1e-9, 0.1, &s, &Ft) == DC_EDOM);
+  CHECK(dc_jkr_sphere_viscoelastic(R, E, w, A, NAN, 0.1, &s, &Ft) == DC_EDOM);
+  CHECK(memcmp(&s, &s0, sizeof s) == 0 && Ft == F0);
+  /* a finite state whose dissipative force overflows: DC_ERANGE, untouched */
+  CHECK(dc_jkr_sphere_viscoelastic(R, E, w, 1e300, 1e-6, 1e300, &s, &Ft) == DC_ERANGE);
+  CHECK(memcmp(&s, &s0, sizeof s) == 0 && Ft == F0);
+  Fd = F0;
+  CHECK(dc_dissip_adhesive_ab(1e300, E, 1e-3, 1e-3, 1e300, &Fd) == DC_ERANGE && Fd == F0);
+  CHECK(dc_dissip_adhesive_radius_rate(1e300, R, E, w, 1e-3, 1e300, &Fd) == DC_ERANGE && Fd == F0);
+  /* a state in contact with a non-finite size is not a state: DC_EDOM */
+  CHECK(dc_jkr_sphere(R, E, w, 1e-9, &s) == DC_OK);
+  s.b = NAN;
+  CHECK(dc_dissip_adhesive_state(A, E, &s, 0.1, &Fd) == DC_EDOM && Fd == F0);
+  s.b = s.a;
+  s.a = NAN;
+  CHECK(dc_dissip_adhesive_state(A, E, &s, 0.1, &Fd) == DC_EDOM && Fd == F0);
+  s.a = 0.0;   /* touching (Hertz at delta = 0): no punch stiffness */
+  CHECK(dc_dissip_adhesive_state(A, E, &s, 0.1, &Fd) == DC_OK && Fd == 0.0);
+  /* b/a so small that (b/a)^2 is not a normal number (was DC_EDOM, from
+     the elliptic integral at m1 = 0): K = ln(4 a/b), continuous with the
+     elliptic-integral path, which K(m1) = ln(4/m1^1/2) + O(m1) matches */
+  const double a = 1e-4;
+  const double gs[] = {1e-150, 1e-160, 1e-200, 1e-300};
+  for (int i = 0; i < 4; i++) {
+    CHECK(dc_dissip_adhesive_ab(A, E, a, a * gs[i], 0.3, &Fd) == DC_OK);
+    CHECK_REL(Fd, A * 0.3 * M_PI * E * a / log(4.0 / gs[i]), 2e-15, "F_dis for b/a -> 0: K = ln(4 a/b)");
+  }
+  CHECK(dc_dissip_adhesive_ab(A, E, 1e100, 1e-300, 0.3, &Fd) == DC_OK);   /* b/a underflows to 0 */
+  CHECK_REL(Fd, A * 0.3 * M_PI * E * 1e100 / (log(4.0) + log(1e100) - log(1e-300)), 1e-15, "F_dis at b/a < DBL_TRUE_MIN");
+}
+
 int main(void)
 {
   test_hertz_limit();
   test_units();
   test_branch_and_radius_form();
+  test_status();
   return check_summary("test_dissipation_adhesive");
 }

@@ -400,6 +400,98 @@ static void test_random_geometries(void)
   CHECK(bad == 0);
 }
 
+/* Status honesty. dc_jkr_at_eccentricity returned NaN with DC_OK for small
+   e2 (1 - e2 rounded to 1 in the slender solver variable below e2 ~ 6e-17,
+   and rho^2 overflowed below e2 ~ 1e-150): now every e2 of (0, e2_hertz)
+   gives a finite state at that very e2, the leading order in e2 below
+   1e-20 (1 - ratio), continuous with the full map there. Errors leave
+   every output untouched; overflow is DC_ERANGE, never DC_OK with inf or
+   NaN; the two closed forms are NaN outside their domain and free of
+   intermediate overflow inside. */
+static void test_status(void)
+{
+  const double E = 1e9, w = 0.05, R = 1e-3;
+  dc_jkr_state s, s0;
+  memset(&s0, 0xA5, sizeof s0);
+  const double ratios[] = {1 - 1e-12, 0.9, 0.3, 1e-2, 1e-6};
+  for (int k = 0; k < 5; k++) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(R, R * ratios[k], E, w, &G) == DC_OK && !G.circular);
+    const double e2s[] = {1e-17, 1e-50, 1e-100, 1e-300, 4.9406564584124654e-324, 1e-15, 0.25 * G.e2_hertz};
+    for (int i = 0; i < 7; i++) {
+      s = s0;
+      CHECK(dc_jkr_at_eccentricity(&G, e2s[i], &s) == DC_OK);
+      CHECK(s.contact == 1 && s.e2 == e2s[i] && isfinite(s.F) && isfinite(s.delta) && isfinite(s.a) &&
+            isfinite(s.b) && isfinite(s.area) && isfinite(s.kn) && s.F <= 0.0 && s.delta <= 0.0 && s.kn > 0.0);
+    }
+    /* leading order: F ~ e2, delta ~ e2^1/3, a ~ e2^2/3, kn ~ e2^2/3 */
+    dc_jkr_state t1, t2;
+    CHECK(dc_jkr_at_eccentricity(&G, 1e-100, &t1) == DC_OK && dc_jkr_at_eccentricity(&G, 1e-40, &t2) == DC_OK);
+    CHECK_REL(t1.F / t2.F, 1e-60, 1e-14, "small e2: F ~ e2");
+    CHECK_REL(t1.delta / t2.delta, 1e-20, 1e-14, "small e2: delta ~ e2^1/3");
+    CHECK_REL(t1.a / t2.a, 1e-40, 1e-14, "small e2: a ~ e2^2/3");
+    CHECK_REL(t1.kn / t2.kn, 1e-40, 1e-14, "small e2: kn ~ e2^2/3");
+    /* the switch to the leading order: continuous to rounding */
+    const double e2sw = 1e-20 * G.l2c;
+    CHECK(dc_jkr_at_eccentricity(&G, e2sw, &t1) == DC_OK);
+    CHECK(dc_jkr_at_eccentricity(&G, nextafter(e2sw, 0.0), &t2) == DC_OK);
+    CHECK_REL(t2.F, t1.F, 16 * EPS, "small-e2 switch: F");
+    CHECK_REL(t2.delta, t1.delta, 16 * EPS, "small-e2 switch: delta");
+    CHECK_REL(t2.a, t1.a, 16 * EPS, "small-e2 switch: a");
+    CHECK_REL(t2.kn, t1.kn, 16 * EPS, "small-e2 switch: kn");
+    /* outside the domain: DC_EDOM, untouched */
+    const double bad[] = {0.0, -1e-300, G.e2_hertz, 1.0, NAN, INFINITY};
+    for (int i = 0; i < 6; i++) {
+      s = s0;
+      CHECK(dc_jkr_at_eccentricity(&G, bad[i], &s) == DC_EDOM && memcmp(&s, &s0, sizeof s) == 0);
+    }
+    /* an overlap whose force overflows: DC_ERANGE, state and hint untouched */
+    dc_jkr_hint h = {0.5, 1.0, 2.0}, h0 = h;
+    s = s0;
+    CHECK(dc_jkr_contact(&G, 1e300, &h, &s) == DC_ERANGE);
+    CHECK(memcmp(&s, &s0, sizeof s) == 0 && memcmp(&h, &h0, sizeof h) == 0);
+  }
+  /* geometry: any error leaves *g untouched (it was cleared and half
+     filled before a failing search); a geometry whose scales overflow is
+     DC_ERANGE, not DC_OK with inf */
+  dc_jkr_geom G, G0;
+  memset(&G0, 0x5A, sizeof G0);
+  G = G0;
+  CHECK(dc_jkr_geometry(R, R * 1e-7, E, w, &G) == DC_EDOM && memcmp(&G, &G0, sizeof G) == 0);
+  CHECK(dc_jkr_geometry(1e300, 5e299, 1e-300, 1e300, &G) == DC_ERANGE && memcmp(&G, &G0, sizeof G) == 0);
+  CHECK(dc_jkr_geometry(1e300, 1e300, 1e-300, 1e300, &G) == DC_ERANGE && memcmp(&G, &G0, sizeof G) == 0);
+  /* spheres: the adhesion scale overflows, or a result does */
+  s = s0;
+  CHECK(dc_jkr_sphere(1e300, 1e-300, 1e300, 1e-3, &s) == DC_ERANGE && memcmp(&s, &s0, sizeof s) == 0);
+  CHECK(dc_jkr_sphere(1e-3, E, w, 1e300, &s) == DC_ERANGE && memcmp(&s, &s0, sizeof s) == 0);
+  CHECK(dc_jkr_sphere_at_radius(1e-100, E, w, 1e200, &s) == DC_ERANGE && memcmp(&s, &s0, sizeof s) == 0);
+  /* R delta below the smallest double, a = (R delta)^1/2 is not */
+  CHECK(dc_jkr_sphere(1e-300, E, 0.0, 1e-300, &s) == DC_OK && s.contact == 1 && s.F == 0.0 && s.delta == 1e-300);
+  CHECK_REL(s.a, 1e-300, 4 * EPS, "a = (R delta)^1/2 where R delta underflows");
+  /* closed forms: NaN outside the domain; inside, no NaN from w^2 or E*^2
+     underflowing (both did: 0/0) or overflowing */
+  CHECK(isnan(dc_jkr_sphere_delta_break(-R, E, w)) && isnan(dc_jkr_sphere_delta_break(R, 0.0, w)) &&
+        isnan(dc_jkr_sphere_delta_break(R, E, -w)) && isnan(dc_jkr_sphere_delta_break(R, E, NAN)));
+  CHECK(isnan(dc_jkr_sphere_pulloff(-R, w)) && isnan(dc_jkr_sphere_pulloff(R, -w)) &&
+        isnan(dc_jkr_sphere_pulloff(INFINITY, w)));
+  const double db1 = -0.75 * cbrt(M_PI * M_PI * R);   /* w = E* */
+  CHECK_REL(dc_jkr_sphere_delta_break(R, 1e-200, 1e-200), db1, 4 * EPS, "delta_break, w = E* = 1e-200");
+  CHECK_REL(dc_jkr_sphere_delta_break(R, 1e200, 1e200), db1, 4 * EPS, "delta_break, w = E* = 1e200");
+  CHECK_REL(dc_jkr_sphere_delta_break(1e-300, 1e-300, 1e300), -0.75 * cbrt(M_PI * M_PI) * 1e300, 4 * EPS,
+            "delta_break, w^2 R/E*^2 = 1e900");
+  CHECK(dc_jkr_sphere_delta_break(1e300, 1e-300, 1e300) == -INFINITY);   /* the value overflows */
+  CHECK(dc_jkr_sphere_delta_break(R, E, 0.0) == 0.0 && dc_jkr_sphere_delta_break(R, 1e-200, 0.0) == 0.0);
+  CHECK(dc_jkr_sphere_pulloff(1e300, 0.0) == 0.0);
+  CHECK_REL(dc_jkr_sphere_pulloff(1e-10, 1e308), 1.5 * M_PI * 1e298, 4 * EPS, "pull-off, 1.5 pi w overflows");
+  CHECK(dc_jkr_sphere_pulloff(1e10, 1e308) == INFINITY);
+  /* the values used by the plugin stay the closed forms to the last bit
+     (volatile: the compiler would fold the right-hand sides with its own,
+     correctly rounded, cube root) */
+  volatile double vR = R, vE = E, vw = w;
+  CHECK(dc_jkr_sphere_delta_break(R, E, w) == -0.75 * cbrt(M_PI * M_PI * vw * vw * vR / (vE * vE)));
+  CHECK(dc_jkr_sphere_pulloff(R, w) == 1.5 * M_PI * vw * vR);
+}
+
 int main(void)
 {
   test_sphere_table();
@@ -411,5 +503,6 @@ int main(void)
   test_curve_shape();
   test_robustness();
   test_random_geometries();
+  test_status();
   return check_summary("test_jkr_elliptic");
 }

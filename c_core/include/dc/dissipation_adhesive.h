@@ -53,21 +53,31 @@ extern "C" {
 
 /* Corrected review Eqs. 39-40 for an elliptic contact of semi-axes
    a >= b > 0: F_dis = A ddelta pi E* a / K(1 - b^2/a^2). A >= 0 [s],
-   Estar > 0, ddelta = d delta/dt [m/s] finite. DC_EDOM outside. */
+   Estar > 0, ddelta = d delta/dt [m/s], all finite; DC_EDOM outside. Any
+   b/a of the domain: where (b/a)^2 is not a normal number, K = ln(4 a/b)
+   (exact to rounding there). DC_ERANGE when F_dis overflows. On any error
+   *F_dis is untouched (as for every function below). */
 int dc_dissip_adhesive_ab(double A, double Estar, double a, double b, double ddelta, double *F_dis);
 
 /* The same for a JKR state (dc_jkr_sphere / dc_jkr_contact): a, b of the
-   state; zero when s->contact == 0. */
+   state (b <= 0 is read as b = a); zero when s->contact == 0, and when
+   a <= 0 (touching). DC_EDOM also for a state in contact whose a or b is
+   not finite. */
 int dc_dissip_adhesive_state(double A, double Estar, const dc_jkr_state *s, double ddelta, double *F_dis);
 
 /* Contact-radius form for spheres: F_dis =
    A (da/dt) d/da [4 E* a^3/(3R) - (8 pi w E* a^3)^1/2 / 3]. Equal to
-   dc_dissip_adhesive_ab(A, E*, a, a, ddelta) when da/dt is the JKR rate. */
+   dc_dissip_adhesive_ab(A, E*, a, a, ddelta) when da/dt is the JKR rate.
+   Domain: A >= 0, R > 0, Estar > 0, w >= 0, a > 0, da_dt, all finite
+   (else DC_EDOM); DC_ERANGE when F_dis overflows. */
 int dc_dissip_adhesive_radius_rate(double A, double R, double Estar, double w, double a, double da_dt,
                                    double *F_dis);
 
 /* Elastic-adhesive plus dissipative normal force for spheres (corrected
-   review Eq. 40): F = F_JKR(delta) + F_dis, state in *s. */
+   review Eq. 40): F = F_JKR(delta) + F_dis, state in *s. Domain: that of
+   dc_jkr_sphere, A >= 0 and ddelta finite (else DC_EDOM); DC_ERANGE when
+   the state or the total overflows. On any error *s and *F_total are
+   untouched. */
 int dc_jkr_sphere_viscoelastic(double R, double Estar, double w, double A, double delta, double ddelta,
                                dc_jkr_state *s, double *F_total);
 

@@ -110,12 +110,21 @@ typedef struct {
    evaluations of the elliptic integrals, a few microseconds, unless the
    contact is circular or w = 0, which cost nothing extra).
    Domain: radii > 0 finite, R_minor/R_major >= DC_JKR_RATIO_MIN,
-   Estar > 0, w >= 0 finite. DC_EDOM outside, DC_ENOCONV if a search fails. */
+   Estar > 0, w >= 0 finite. DC_EDOM outside, DC_ENOCONV if a search fails,
+   DC_ERANGE when a quantity of the geometry overflows (only far outside
+   physical magnitudes). On any error *g is untouched. */
 int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *g);
 
 /* Forward map (review Eqs. 19-21): the state with contact eccentricity
-   e2 in (0, e2_hertz) (axis ratio g = (1-e2)^1/2), either branch, with
-   delta and F. Elliptic contacts with w > 0 only (DC_EDOM otherwise). */
+   e2 (axis ratio g = (1-e2)^1/2), either branch, with delta and F.
+   Domain: elliptic contacts with w > 0 (not circular), 0 < e2 < e2_hertz;
+   DC_EDOM outside (NaN e2 included). Every e2 of the domain is taken as
+   given, down to the subnormals: below 1e-20 (1 - R_minor/R_major) from
+   the leading order of the map in e2 (F ~ e2, delta ~ e2^1/3, a ~ e2^2/3;
+   the neglected terms are below 1e-20 relative), where the full form
+   would overflow (rho ~ 1/e2) from e2 ~ 1e-150 on. DC_ERANGE when e2 is
+   within rounding of e2_hertz (the contact size grows without bound
+   there) or a result overflows. On any error *s is untouched. */
 int dc_jkr_at_eccentricity(const dc_jkr_geom *g, double e2, dc_jkr_state *s);
 
 /* Per-contact solver memory of dc_jkr_contact, kept between time steps.
@@ -136,7 +145,10 @@ typedef struct {
    ln((v - v_b)/(v_H - v)) against ln(delta - delta_break) and usually
    takes one or two evaluations. w = 0 returns exactly dc_hertz_contact;
    circular contacts use dc_jkr_sphere. delta < delta_break: contact = 0,
-   zero state, DC_OK. Domain: delta finite. */
+   zero state, DC_OK. Domain: delta finite (else DC_EDOM). DC_ERANGE when
+   a result overflows; on DC_EDOM and DC_ERANGE *s and *hint are
+   untouched. DC_ENOCONV: *s (and *hint) hold the last iterate when it is
+   finite, else they are untouched. */
 int dc_jkr_contact(const dc_jkr_geom *g, double delta, dc_jkr_hint *hint, dc_jkr_state *s);
 
 /* Contact hysteresis: a new contact forms when delta >= 0; an existing one

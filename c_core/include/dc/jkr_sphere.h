@@ -36,15 +36,25 @@ typedef struct {
    Sec. 2.2 circular limit): the quartic in a^1/2 is solved from a rational
    starting value by two Halley steps (no transcendental call, one cube
    root for the length scale). Stable (large-contact) branch.
-   Domain: R > 0, Estar > 0, w >= 0, delta finite. w = 0 is Hertz. delta <
-   delta_break gives contact = 0 and a zero state (DC_OK). */
+   Domain: R > 0, Estar > 0, w >= 0, delta finite (else DC_EDOM). w = 0
+   is Hertz. delta < delta_break gives contact = 0 and a zero state (DC_OK).
+   DC_ERANGE when a result, or the adhesion overlap scale (w/Estar)^2/3
+   R^1/3 itself, overflows (only far outside physical magnitudes). A
+   contact radius below the smallest double gives the touching state
+   (contact = 1, the rest 0). On any error *s is untouched. */
 int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s);
 
-/* Classical JKR state for a given contact radius a > 0 (either branch). */
+/* Classical JKR state for a given contact radius a > 0 (either branch).
+   Domain: R > 0, Estar > 0, w >= 0, a > 0, all finite (else DC_EDOM);
+   DC_ERANGE when a result overflows. On any error *s is untouched. */
 int dc_jkr_sphere_at_radius(double R, double Estar, double w, double a, dc_jkr_state *s);
 
 /* Pull-off force 3/2 pi w R (load control) and separation overlap
-   delta_break = -3/4 (pi^2 w^2 R / Estar^2)^1/3 (overlap control). */
+   delta_break = -3/4 (pi^2 w^2 R / Estar^2)^1/3 (overlap control).
+   Domain: R > 0, Estar > 0, w >= 0, all finite; NaN outside. Inside, the
+   value to rounding, free of intermediate overflow and underflow: +inf
+   (pull-off) or -inf (delta_break) only when the value itself exceeds
+   DBL_MAX, and 0 or a subnormal only when it is that small. */
 double dc_jkr_sphere_pulloff(double R, double w);
 double dc_jkr_sphere_delta_break(double R, double Estar, double w);
 
