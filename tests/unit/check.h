@@ -61,14 +61,70 @@ static int check_summary(const char *suite)
   return check_failed_ ? 1 : 0;
 }
 
-/* Reads one comma-separated row of up to n numbers; returns how many. */
-static int check_read_row(FILE *f, double *v, int n)
+/* The one reader of the committed reference tables (tests/reference/<name>.csv)
+   for every unit test: check_read_row, and check_read_tagged_row for tables
+   whose first column is text. Both read the next row, skipping blank lines
+   and comment lines (first character '#'); split it at commas; and convert
+   fields with strtod, each field as a whole (surrounding blanks allowed).
+   They return how many numeric fields were read, at most n, stopping at
+   the first field that is not a number: a row of column names gives 0, as
+   does the end of the file, and a short row fewer than n. Tables with a
+   row of column names: read it with one call first. A line longer than the
+   buffer is a failure (counted) and is skipped. */
+static int check_read_fields_(FILE *f, char *tag, size_t ntag, double *v, int n)
 {
-  char line[2048];
-  if (!fgets(line, sizeof line, f)) return 0;
+  char line[4096];
+  for (;;) {
+    if (!fgets(line, sizeof line, f)) return 0;
+    const size_t len = strlen(line);
+    if (len + 1 == sizeof line && line[len - 1] != '\n' && !feof(f)) {
+      check_failed_++;
+      printf("FAIL reference table row longer than %d characters\n", (int)sizeof line - 2);
+      int c;
+      while ((c = fgetc(f)) != EOF && c != '\n') {}
+      continue;
+    }
+    char *p = line;
+    while (*p == ' ' || *p == '\t') p++;
+    if (*p == '#' || *p == '\n' || *p == '\r' || *p == '\0') continue;
+    break;
+  }
+  char *p = line;
+  if (tag) {
+    /* first field: text */
+    size_t k = 0;
+    while (*p == ' ' || *p == '\t') p++;
+    while (*p && *p != ',' && *p != '\n' && *p != '\r') {
+      if (k + 1 < ntag) tag[k++] = *p;
+      p++;
+    }
+    while (k > 0 && (tag[k - 1] == ' ' || tag[k - 1] == '\t')) k--;
+    if (ntag > 0) tag[k] = '\0';
+    if (*p != ',') return 0;
+    p++;
+  }
   int k = 0;
-  for (char *p = strtok(line, ",\n"); p && k < n; p = strtok(NULL, ",\n")) v[k++] = strtod(p, NULL);
+  while (k < n) {
+    char *end;
+    const double x = strtod(p, &end);
+    if (end == p) break;
+    while (*end == ' ' || *end == '\t' || *end == '\r') end++;
+    if (*end != ',' && *end != '\n' && *end != '\0') break;
+    v[k++] = x;
+    if (*end != ',') break;
+    p = end + 1;
+  }
   return k;
+}
+
+/* The next row of numbers (above). */
+static int check_read_row(FILE *f, double *v, int n) { return check_read_fields_(f, NULL, 0, v, n); }
+
+/* The next row whose first field is text: that field (truncated to ntag -
+   1 characters) in tag, the numbers after it in v (above). */
+static int check_read_tagged_row(FILE *f, char *tag, size_t ntag, double *v, int n)
+{
+  return check_read_fields_(f, tag, ntag, v, n);
 }
 
 /* Opens a committed reference table (path relative to tests/reference). */

@@ -27,12 +27,11 @@ int main(void)
 {
   FILE *f = check_open_reference("curvature.csv");
   if (!f) return check_summary("curvature");
-  char line[512];
   int rows = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#') continue;
-    double a, b, c, n, x, y, k_plane, k_z;
-    if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &a, &b, &c, &n, &x, &y, &k_plane, &k_z) != 8) continue;
+  double row[8];
+  while (check_read_row(f, row, 8) == 8) {
+    const double a = row[0], b = row[1], c = row[2], n = row[3], x = row[4], y = row[5], k_plane = row[6],
+                 k_z = row[7];
     const double s[3] = {a, b, c}, p[3] = {x, y, 0.0};
     double g[3], H[9], nrm[3], u[3], v[3], form[3], k1, k2;
     superquadric(s, n, p, g, H);

@@ -10,13 +10,11 @@ int main(void)
 {
   FILE *f = check_open_reference("ellint.csv");
   if (!f) return check_summary("elliptic_integrals");
-  char line[512];
   int rows = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#') continue;
-    char kind[4];
-    double x, K, E, D, B, C;
-    if (sscanf(line, "%3[^,],%lf,%lf,%lf,%lf,%lf,%lf", kind, &x, &K, &E, &D, &B, &C) != 7) continue;
+  char kind[4];
+  double row[6];
+  while (check_read_tagged_row(f, kind, sizeof kind, row, 6) == 6) {
+    const double x = row[0], K = row[1], E = row[2], D = row[3], B = row[4], C = row[5];
     dc_ellint el;
     int st = strcmp(kind, "m") == 0 ? dc_ellint_m(x, &el) : dc_ellint_m1(x, &el);
     CHECK(st == DC_OK);
@@ -38,11 +36,8 @@ int main(void)
   const char *names[5] = {"K", "E", "D", "B", "C"};
   double worst[5] = {0, 0, 0, 0, 0};
   int dense = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#') continue;
-    char kind[4];
-    double x, want[5];
-    if (sscanf(line, "%3[^,],%lf,%lf,%lf,%lf,%lf,%lf", kind, &x, &want[0], &want[1], &want[2], &want[3], &want[4]) != 7) continue;
+  while (check_read_tagged_row(f, kind, sizeof kind, row, 6) == 6) {
+    const double x = row[0], *want = row + 1;
     dc_ellint el;
     CHECK((strcmp(kind, "m") == 0 ? dc_ellint_m(x, &el) : dc_ellint_m1(x, &el)) == DC_OK);
     const double got[5] = {el.K, el.E, el.D, el.B, el.C};

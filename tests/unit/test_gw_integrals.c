@@ -13,12 +13,12 @@ static void table(void)
 {
   FILE *f = check_open_reference("gw_integrals.csv");
   if (!f) return;
-  char line[256];
   int rows = 0, seen_zero = 0, seen_1em3 = 0;
   double worst_fast = 0, worst_closed = 0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#' || line[0] == 'n') continue;
-    double n = strtod(strtok(line, ","), 0), h = strtod(strtok(0, ","), 0), want = strtod(strtok(0, ",\n"), 0);
+  double row[3];
+  check_read_row(f, row, 3);   /* column names */
+  while (check_read_row(f, row, 3) == 3) {
+    const double n = row[0], h = row[1], want = row[2];
     const int order = (int)(2 * n + 0.5);
     rows++;
     if (h == 0.0) seen_zero = 1;

@@ -14,13 +14,10 @@ static double ref_F(double n, double h)
 {
   FILE *f = check_open_reference("gw_integrals.csv");
   if (!f) return NAN;
-  char line[256];
-  double v = NAN;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#' || line[0] == 'n') continue;
-    double nn = strtod(strtok(line, ","), 0), hh = strtod(strtok(0, ","), 0);
-    if (nn == n && hh == h) { v = strtod(strtok(0, ",\n"), 0); break; }
-  }
+  double v = NAN, row[3];
+  check_read_row(f, row, 3);   /* column names */
+  while (check_read_row(f, row, 3) == 3)
+    if (row[0] == n && row[1] == h) { v = row[2]; break; }
   fclose(f);
   return v;
 }

@@ -10,13 +10,12 @@ int main(void)
 {
   FILE *f = check_open_reference("hertz_elliptic.csv");
   if (!f) return check_summary("hertz_elliptic");
-  char line[512];
   int rows = 0;
   double worst_eq14 = 0.0;
-  while (fgets(line, sizeof line, f)) {
-    if (line[0] == '#') continue;
-    double r, e2, m1, gamma, beta, F, a, b;
-    if (sscanf(line, "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", &r, &e2, &m1, &gamma, &beta, &F, &a, &b) != 8) continue;
+  double row[8];
+  while (check_read_row(f, row, 8) == 8) {
+    const double r = row[0], e2 = row[1], m1 = row[2], gamma = row[3], beta = row[4], F = row[5], a = row[6],
+                 b = row[7];
     char what[64];
     dc_hertz_geom g;
     CHECK(dc_hertz_geometry(1.0, r, &g) == DC_OK);
