@@ -133,17 +133,17 @@ int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta, dc_hert
   h.area = M_PI * g->R_area * delta;                      /* Eq. 2 */
   h.a = sqrt(2.0 * g->R_major * delta * g->D / g->K);
   h.b = h.a * sqrt(g->m1);
-  if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) {
-    /* an intermediate product overflowed: the same expressions without
-       overflow before the end; DC_ERANGE if a result itself does */
-    const double sR = sqrt(g->R_force), sd = sqrt(delta);
-    h.F = product5(4.0 / 3.0, Estar, sR, sd, delta);
-    h.kn = product5(2.0, Estar, sR, sd, 1.0);
-    h.area = product5(M_PI, g->R_area, delta, 1.0, 1.0);
+  /* where an intermediate product overflowed: the same expression without
+     overflow before the end; DC_ERANGE if a result itself does */
+  const double sR = sqrt(g->R_force), sd = sqrt(delta);
+  if (!isfinite(h.F)) h.F = product5(4.0 / 3.0, Estar, sR, sd, delta);
+  if (!isfinite(h.kn)) h.kn = product5(2.0, Estar, sR, sd, 1.0);
+  if (!isfinite(h.area)) h.area = product5(M_PI, g->R_area, delta, 1.0, 1.0);
+  if (!isfinite(h.a)) {
     h.a = product5(sqrt(2.0 * g->D / g->K), sqrt(g->R_major), sd, 1.0, 1.0);
     h.b = h.a * sqrt(g->m1);
-    if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) return DC_ERANGE;
   }
+  if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) return DC_ERANGE;
   *s = h;
   return DC_OK;
 }
