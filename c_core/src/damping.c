@@ -2,6 +2,7 @@
 #include "dc/damping.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 
 int dc_damping_beta(double e, double *beta)
@@ -16,13 +17,24 @@ int dc_punch_stiffness(double Estar, double a, double b, double *k)
 {
   if (!(Estar > 0.0 && isfinite(Estar) && b > 0.0 && a >= b && isfinite(a))) return DC_EDOM;
   if (a == b) {
-    *k = dc_punch_stiffness_circle(Estar, a);
+    double r = dc_punch_stiffness_circle(Estar, a);
+    if (!isfinite(r)) r = 2.0 * (Estar * a);   /* 2 E* overflowed */
+    if (!isfinite(r)) return DC_ERANGE;
+    *k = r;
     return DC_OK;
   }
-  const double g = b / a;
-  dc_ellint el;
-  dc_ellint_m1(g * g, &el);
-  const double r = M_PI * Estar * a / el.K;
+  const double g = b / a, m1 = g * g;
+  double K;
+  if (m1 >= DBL_MIN) {
+    dc_ellint el;
+    dc_ellint_m1(m1, &el);
+    K = el.K;
+  } else {
+    /* (b/a)^2 underflows: K = ln(4 a/b) + O((b/a)^2 ln(a/b)), exact to rounding */
+    K = log(4.0) - log(g);
+  }
+  double r = M_PI * Estar * a / K;
+  if (!isfinite(r)) r = M_PI / K * a * Estar;   /* pi E* a overflowed; K > pi/2 */
   if (!isfinite(r)) return DC_ERANGE;
   *k = r;
   return DC_OK;

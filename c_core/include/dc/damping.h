@@ -34,7 +34,8 @@ static inline double dc_damping_viscoelastic(double A, double S) { return A * S;
 /* Flat-punch stiffness of a contact ellipse of semi-axes a >= b > 0:
    k = pi E* a / K(e^2), e^2 = 1 - b^2/a^2 (2 E* a for a circle); the
    stiffness an adhesive (JKR) contact's damping acts on
-   (dc/dissipation_adhesive.h). DC_EDOM unless E* > 0, a >= b > 0 finite. */
+   (dc/dissipation_adhesive.h). DC_EDOM unless E* > 0, a >= b > 0 finite;
+   DC_ERANGE (k untouched) when k overflows. */
 int dc_punch_stiffness(double Estar, double a, double b, double *k);
 
 /* The same for a circle of radius a: 2 E* a. */
