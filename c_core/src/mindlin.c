@@ -9,8 +9,10 @@ int dc_mindlin_pair_init(double E1, double nu1, double E2, double nu2, dc_mindli
         nu2 > -1.0 && nu2 <= 0.5))
     return DC_EDOM;
   const double c1 = 2.0 * (1.0 + nu1) / E1, c2 = 2.0 * (1.0 + nu2) / E2; /* 1/G_i */
-  p->s0 = c1 + c2;
-  p->s1 = nu1 * c1 + nu2 * c2;
+  const double s0 = c1 + c2, s1 = nu1 * c1 + nu2 * c2;
+  if (!(isfinite(s0) && isfinite(s1))) return DC_ERANGE;   /* E_i so small that 1/G_i overflows */
+  p->s0 = s0;
+  p->s1 = s1;
   return DC_OK;
 }
 
@@ -22,7 +24,10 @@ int dc_mindlin_stiffness(const dc_mindlin_pair *p, double a, double K, double D,
     return DC_EDOM;
   const double c_major = (p->s0 - p->s1) * K + p->s1 * D;   /* Eq. 57, theta = 0 */
   const double c_minor = p->s0 * K - p->s1 * D;             /* Eq. 57, theta = pi/2 */
-  const double km = 2.0 * M_PI * a / c_major, kn = 2.0 * M_PI * a / c_minor;
+  double km = 2.0 * M_PI * a / c_major, kn = 2.0 * M_PI * a / c_minor;
+  /* 2 pi a overflowed: 2 pi (a/c) overflows only with the result */
+  if (!isfinite(km)) km = 2.0 * M_PI * (a / c_major);
+  if (!isfinite(kn)) kn = 2.0 * M_PI * (a / c_minor);
   if (!isfinite(km) || !isfinite(kn)) return DC_ERANGE;
   *k_major = km;
   *k_minor = kn;

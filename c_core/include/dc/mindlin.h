@@ -31,7 +31,8 @@ typedef struct {
 } dc_mindlin_pair;
 
 /* From Young's moduli E_i > 0 and Poisson ratios nu_i in (-1, 0.5]
-   (G_i = E_i / (2 (1 + nu_i))). DC_EDOM outside. */
+   (G_i = E_i / (2 (1 + nu_i))). DC_EDOM outside; DC_ERANGE (p untouched)
+   when a compliance sum overflows (E_i below ~1e-308). */
 int dc_mindlin_pair_init(double E1, double nu1, double E2, double nu2, dc_mindlin_pair *p);
 
 /* No-slip stiffness of a circular contact of radius a: 8 G* a (G* =
@@ -41,7 +42,8 @@ static inline double dc_mindlin_kt_circle(double Gstar, double a) { return 8. * 
 /* Stiffnesses along the major and minor axes of a contact ellipse of
    semi-major axis a >= 0 whose eccentricity gives the elliptic integrals K,
    D (dc_hertz_geom, dc_ellint). Circle: both 8 G* a. DC_EDOM for a < 0,
-   non-finite a or K <= 0. */
+   non-finite a or K <= 0; DC_ERANGE (outputs untouched) when a stiffness
+   overflows. */
 int dc_mindlin_stiffness(const dc_mindlin_pair *p, double a, double K, double D,
                          double *k_major, double *k_minor);
 
