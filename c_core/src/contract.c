@@ -1,6 +1,7 @@
 /* The law contract's shared pieces: parameter checks, the patch layout. */
 #include "dc/contract.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 
@@ -31,7 +32,9 @@ void dc_param_error_format(const dc_param_error *err, int itype, int jtype, char
 
 void dc_patch_circular(double R, double delta, double F, dc_patch *p)
 {
-  const double a = delta > 0.0 ? sqrt(R * delta) : 0.0;
+  const double Rd = R * delta;
+  double a = delta > 0.0 ? sqrt(Rd) : 0.0;
+  if (delta > 0.0 && !(Rd >= DBL_MIN && Rd <= DBL_MAX)) a = sqrt(R) * sqrt(delta);   /* R delta out of range */
   p->a = p->b = a;
   p->axis[0] = p->axis[1] = p->axis[2] = 0.0;
   p->F_elastic = F;
