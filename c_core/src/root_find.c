@@ -46,7 +46,11 @@ int dc_root_brent_ends(dc_root_fn f, void *ctx, double a, double b, double fa, d
     while (sb == sa || sb == sc) sb++;
     fb = f(b, ctx, sb);
     n++;
-    if (!isfinite(fb)) break;   /* f failed inside the bracket */
+    if (!isfinite(fb)) {
+      /* f failed inside the bracket: the last point where it did not */
+      r->x = a; r->fx = fa; r->slot = sa; r->evaluations = n;
+      return DC_ENOCONV;
+    }
   }
   r->x = b; r->fx = fb; r->slot = sb; r->evaluations = n;
   return DC_ENOCONV;

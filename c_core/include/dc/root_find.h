@@ -41,7 +41,8 @@ typedef struct {
    DC_ENOCONV after max_iter evaluations without meeting the tolerance
    (rtol = atol = 0 asks for more than the doubles can give, and ends
    there unless f hits 0 exactly), or when f is not finite inside the
-   bracket: *r holds the last iterate. */
+   bracket: *r holds the last iterate (after a non-finite f, the last point
+   where f was finite, so *r is always finite). */
 int dc_root_brent_ends(dc_root_fn f, void *ctx, double a, double b, double fa, double fb, double rtol,
                        double atol, int max_iter, dc_root_result *r);
 
