@@ -158,6 +158,18 @@ int dc_relative_radii(double k1I, double k2I, double k1II, double k2II,
 
 void dc_form_major_axis(const double form[3], const double u[3], const double v[3], double axis[3])
 {
+  if (!all_finite(form, 3)) {
+    axis[0] = axis[1] = axis[2] = 0.0;
+    return;
+  }
+  const int e = max_exponent(form, 3);
+  if (e > 500 || e < -500) {
+    /* the squares below would overflow or underflow: the same direction
+       from the form scaled by 2^-e (exact) */
+    const double fs[3] = {ldexp(form[0], -e), ldexp(form[1], -e), ldexp(form[2], -e)};
+    dc_form_major_axis(fs, u, v, axis);
+    return;
+  }
   double k1, k2;
   dc_form_principal(form, &k1, &k2, 0);
   /* (form - k2 I) x = 0: the two rows give (form1, k2 - form0) and
