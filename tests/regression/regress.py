@@ -55,10 +55,10 @@ def run(deck, workdir, ranks=1, variables=None, tag="run", expect_error=False):
         print(p.stdout[-3000:])
         print(log[-3000:])
         raise SystemExit("FAIL %s: LIGGGHTS exited with %d (%s)" % (deck, p.returncode, " ".join(cmd)))
-    # every model combination a deck uses is compiled (plugin/style_contact_model.whitelist)
+    # every model combination a deck uses is compiled (plugin/gen_whitelist.py)
     if "not located in any whitelist" in p.stdout + log:
-        raise SystemExit("FAIL %s: a contact-model combination of this deck is missing from "
-                         "plugin/style_contact_model.whitelist (%s)" % (deck, " ".join(cmd)))
+        raise SystemExit("FAIL %s: a contact-model combination of this deck is not compiled: "
+                         "plugin/gen_whitelist.py missed it (%s)" % (deck, " ".join(cmd)))
     return log
 
 

@@ -1,52 +1,45 @@
 #!/usr/bin/env python3
-"""The model whitelist (plugin/style_contact_model.whitelist) against the
-decks: every `pair_style gran` and `fix ... wall/gran` line of inputs/,
-examples/ and tests/bench/ must name a compiled combination, with ${model}
-taken as each model the deck, its check script or the benchmark script
-names (a deck run by a check also fails if LIGGGHTS warns that its
-combination is missing: regress.run). And every whitelist line is used by
-some deck, so that the list stays small.
-Usage: check_whitelist.py WORKDIR"""
+"""Writes the model whitelist (the contact-model combinations compiled for
+speed) from the decks: every `pair_style gran` and `fix ... wall/gran` line
+of inputs/, examples/ and tests/bench/, with ${model} taken as each normal
+model the deck, its check script (tests/regression/check_<case>.py) or the
+benchmark script names. Run by plugin/CMakeLists.txt at configure time.
+A deck line naming an unknown model is an error (exit 2).
+Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT"""
 import glob
 import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT
-
-c = Checks("whitelist")
+ROOT, LIGG_SRC, OUTPUT = sys.argv[1:4]
 KINDS = {"model": "NORMAL", "tangential": "TANGENTIAL", "cohesion": "COHESION", "rolling_friction": "ROLLING",
          "surface": "SURFACE"}
 # keyword -> enum name of every model LIGGGHTS and the plugin define
 enums = {}
-for path in glob.glob(os.path.join(ROOT, ".deps", "liggghts-3.8.0", "src", "*_model_*.h")) + \
+for path in glob.glob(os.path.join(LIGG_SRC, "*_model_*.h")) + \
         glob.glob(os.path.join(ROOT, "plugin", "models", "*_model_*.h")):
     for kind, enum, name in re.findall(r"^(\w+)_MODEL\((\w+),\s*([\w/]+),", open(path).read(), re.M):
         enums[(kind, name)] = enum
-c.true(("NORMAL", "hertz_elliptic") in enums and ("TANGENTIAL", "history") in enums,
-       "model keywords read from LIGGGHTS' and the plugin's model headers (%d)" % len(enums))
-
-white = set()
-for line in open(os.path.join(ROOT, "plugin", "style_contact_model.whitelist")):
-    m = re.match(r"GRAN_MODEL\((.*)\)", line.strip())
-    if m:
-        white.add(tuple(x.strip() for x in m.group(1).split(",")))
+if ("NORMAL", "hertz_elliptic") not in enums or ("TANGENTIAL", "history") not in enums:
+    sys.exit("gen_whitelist: no model headers found in %s and plugin/models" % LIGG_SRC)
 
 
-def combination(words):
-    """The GRAN_MODEL tuple of a pair_style gran / wall/gran argument list."""
+def combination(words, where):
+    """The GRAN_MODEL arguments of a pair_style gran / wall/gran argument list."""
     got = {"NORMAL": "NORMAL_OFF", "TANGENTIAL": "TANGENTIAL_OFF", "COHESION": "COHESION_OFF",
            "ROLLING": "ROLLING_OFF", "SURFACE": "SURFACE_DEFAULT"}
     for k, word in enumerate(words[:-1]):
         if word in KINDS:
             kind = KINDS[word]
-            got[kind] = enums.get((kind, words[k + 1]), "unknown %s model '%s'" % (word, words[k + 1]))
+            if (kind, words[k + 1]) not in enums:
+                sys.stderr.write("gen_whitelist: %s: unknown %s model '%s'\n" % (where, word, words[k + 1]))
+                sys.exit(2)
+            got[kind] = enums[(kind, words[k + 1])]
     return tuple(got[k] for k in ("NORMAL", "TANGENTIAL", "COHESION", "ROLLING", "SURFACE"))
 
 
 bench = open(os.path.join(ROOT, "tests", "bench", "bench_scenes.sh")).read()
-used, lines = set(), 0
+used = []
 decks = glob.glob(os.path.join(ROOT, "inputs", "*", "in.*")) + glob.glob(os.path.join(ROOT, "examples", "*", "in.*")) + \
     glob.glob(os.path.join(ROOT, "tests", "bench", "in.*"))
 for deck in sorted(decks):
@@ -65,11 +58,10 @@ for deck in sorted(decks):
         if not (line.startswith("pair_style") and "gran" in words[:2] or "wall/gran" in words):
             continue
         for m in sorted(models) if "${model}" in line else [None]:
-            combo = combination([m if w == "${model}" else w for w in words])
-            lines += 1
-            used.add(combo)
-            c.true(combo in white, "%s: %s" % (os.path.relpath(deck, ROOT), ", ".join(combo)))
-c.true(lines > 20, "%d deck lines checked" % lines)
-for combo in sorted(white - used):
-    c.true(False, "whitelist line used by no deck: GRAN_MODEL(%s)" % ", ".join(combo))
-c.finish()
+            combo = combination([m if w == "${model}" else w for w in words], os.path.relpath(deck, ROOT))
+            if combo not in used:
+                used.append(combo)
+text = "".join("GRAN_MODEL(%s)\n" % ", ".join(c) for c in sorted(used))
+if not os.path.exists(OUTPUT) or open(OUTPUT).read() != text:
+    with open(OUTPUT, "w") as f:
+        f.write(text)
