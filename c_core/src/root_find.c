@@ -21,7 +21,8 @@ int dc_root_brent_ends(dc_root_fn f, void *ctx, double a, double b, double fa, d
       sa = sb; sb = sc; sc = sa;
     }
     const double tol = rtol * fabs(b) + atol;
-    const double xm = 0.5 * (c - b);
+    double xm = 0.5 * (c - b);
+    if (!isfinite(xm)) xm = 0.5 * c - 0.5 * b;   /* c - b overflowed (a bracket wider than DBL_MAX) */
     if (fabs(xm) <= tol || fb == 0.0) {
       r->x = b; r->fx = fb; r->slot = sb; r->evaluations = n;
       return DC_OK;
