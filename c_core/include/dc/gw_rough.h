@@ -27,6 +27,7 @@
 #ifndef DC_GW_ROUGH_H
 #define DC_GW_ROUGH_H
 
+#include <float.h>
 #include <math.h>
 #include "dc/hertz_elliptic.h"
 
@@ -50,10 +51,13 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
 
 /* rms summit height of a contact of two rough surfaces with rms summit
    heights sigma_i, sigma_j >= 0 (independent Gaussian heights):
-   sigma = (sigma_i^2 + sigma_j^2)^1/2. Inline, unchecked. */
+   sigma = (sigma_i^2 + sigma_j^2)^1/2. Inline, unchecked; hypot where the
+   squares overflow or underflow (sigma beyond ~1e154 or below ~1e-154,
+   which gave inf or 0). */
 static inline double dc_gw_roughness_combine(double sigma_i, double sigma_j)
 {
-  return sqrt(sigma_i * sigma_i + sigma_j * sigma_j);
+  const double s2 = sigma_i * sigma_i + sigma_j * sigma_j;
+  return s2 >= DBL_MIN && s2 <= DBL_MAX ? sqrt(s2) : hypot(sigma_i, sigma_j);
 }
 
 /* The law contract's output (dc/contract.h) of a rough contact with force
