@@ -405,3 +405,14 @@ int dc_jkr_check(double w, dc_param_error *err)
 {
   return dc_param_check("workOfAdhesion", w, 0.0, 0, HUGE_VAL, 1, "[0, inf) J/m^2", err);
 }
+
+void dc_jkr_normal(const dc_jkr_state *s, double F_pulloff, dc_contact *c)
+{
+  c->F = s->F;
+  c->kn = s->kn;
+  c->area = s->area;
+  c->a = s->a;
+  c->b = s->b;
+  c->F_bound = s->contact ? dc_jkr_friction_load(s->F, F_pulloff) : 0.0;
+  c->formed = s->contact;
+}

@@ -153,12 +153,8 @@ private:
       kt = dc_mindlin_kt_circle(G, r_area == r_force ? root : sqrt(r_area * delta));
       P = kn * delta;
       if (ax) {
-        dc_hertz_state s;
-        s.a = s.b = root;
-        if (sq) dc_hertz_contact(&g, Y, delta, &s);
-        c.a = s.a;
-        c.b = s.b;
-        c.F_bound = P;
+        if (!sq) dc_hertz_geometry(R_major, R_major, &g);
+        dc_hertz_normal(&g, Y, delta, &c);
       }
     } else {
       dc_jkr_state s;
@@ -190,18 +186,10 @@ private:
         kt = dc_mindlin_kt_circle(G, s.a);
       }
       kn = Sn;
-      c.a = s.a;
-      c.b = s.b;
-      c.F_bound = dc_jkr_friction_load(P, F_pull);
+      if (ax) dc_jkr_normal(&s, F_pull, &c);
     }
     applyForce(sidata, P, vn, Sn, kn, kt, i_forces, j_forces);
-    if (ax) {
-      c.F = P;
-      c.kn = Sn;
-      c.area = M_PI * c.a * c.b;
-      c.formed = 1;
-      publish(sidata, c, ax);
-    }
+    if (ax) publish(sidata, c, ax);
     return true;
   }
 

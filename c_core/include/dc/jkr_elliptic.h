@@ -170,6 +170,12 @@ int dc_jkr_check(double w, dc_param_error *err);
    branch, so friction acts while the neck is in tension. */
 static inline double dc_jkr_friction_load(double F, double F_pulloff) { return F + 2.0 * F_pulloff; }
 
+/* The law contract's output (dc/contract.h) of a JKR state s (dc_jkr_sphere,
+   dc_jkr_contact) with pull-off force F_pulloff > 0: force, stiffness,
+   area, semi-axes, friction load (dc_jkr_friction_load), formed =
+   s->contact. */
+void dc_jkr_normal(const dc_jkr_state *s, double F_pulloff, dc_contact *c);
+
 #ifdef __cplusplus
 }
 #endif
