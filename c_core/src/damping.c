@@ -30,8 +30,9 @@ int dc_punch_stiffness(double Estar, double a, double b, double *k)
     dc_ellint_m1(m1, &el);
     K = el.K;
   } else {
-    /* (b/a)^2 underflows: K = ln(4 a/b) + O((b/a)^2 ln(a/b)), exact to rounding */
-    K = log(4.0) - log(g);
+    /* (b/a)^2 underflows: K = ln(4 a/b) + O((b/a)^2 ln(a/b)), exact to
+       rounding, from the logarithms of a and b (b/a itself may underflow) */
+    K = 2.0 * M_LN2 + (log(a) - log(b));
   }
   double r = M_PI * Estar * a / K;
   if (!isfinite(r)) r = M_PI / K * a * Estar;   /* pi E* a overflowed; K > pi/2 */

@@ -1,7 +1,7 @@
 /* Viscoelastic dissipation in adhesive contacts: corrected review Eqs.
    39-40 (derivation and the seed errors in dc/dissipation_adhesive.h). */
 #include "dc/dissipation_adhesive.h"
-#include "dc/elliptic_integrals.h"
+#include "dc/damping.h"
 #include "dc/status.h"
 #include <float.h>
 #include <math.h>
@@ -13,24 +13,8 @@ int dc_dissip_adhesive_ab(double A, double Estar, double a, double b, double dde
         b <= a && isfinite(ddelta)))
     return DC_EDOM;
   double k;
-  if (b == a) {
-    k = 2.0 * Estar * a;
-  } else {
-    const double g = b / a;
-    double K;
-    if (g * g >= DBL_MIN) {
-      dc_ellint el;
-      const int st = dc_ellint_m1(g * g, &el);
-      if (st != DC_OK) return st;
-      K = el.K;
-    } else {
-      /* (b/a)^2 is not a normal number (b/a < 1.5e-154): K(m1) = ln(4/m1^1/2)
-         + O(m1 ln m1) = ln(4 a/b) to rounding, from the logarithms of a and
-         b themselves (b/a may underflow) */
-      K = 2.0 * M_LN2 + (log(a) - log(b));
-    }
-    k = M_PI * Estar * a / K;
-  }
+  const int st = dc_punch_stiffness(Estar, a, b, &k);
+  if (st != DC_OK) return st;
   const double F = A * ddelta * k;
   if (!isfinite(F)) return DC_ERANGE;
   *F_dis = F;
