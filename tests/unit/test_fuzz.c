@@ -1,0 +1,1625 @@
+/* The status contract of dc/status.h for every public c_core function, by a
+   seeded fuzz: random and extreme arguments (log-uniform magnitudes over
+   1e-320 .. 1e308 of either sign, 0, -0, subnormals, DBL_MAX, +-inf, NaN,
+   values at and a few ulps around the domain edges) mixed with typical
+   values inside each domain (each call draws how many of its arguments are
+   wild), 1e5 calls per function (the full GW solver on small m only, see
+   fuzz_gw_solve). For every call of a function that returns a status:
+   - the status is a dc_status value;
+   - DC_OK: every output double is finite (outputs are filled with a NaN
+     byte pattern before the call, so an output left unwritten fails too);
+   - DC_EDOM, DC_ERANGE: every output is byte for byte untouched;
+   - DC_ENOCONV: outputs untouched, or every output double finite (status.h:
+     the outputs hold the last iterate);
+   - a non-finite input gives DC_EDOM, and inputs inside the documented
+     domain never give DC_EDOM (where the domain is simple to state; a
+     sufficient subset of it where it is not);
+   - where a bound on the true result is cheap, DC_ERANGE only when it can
+     overflow.
+   Struct inputs made by a constructor (dc_hertz_geom, dc_feng_law,
+   dc_jkr_geom, dc_gw_solver) come from that constructor under the same
+   fuzz; plain-data inputs documented as "any content" (dc_jkr_hint) and the
+   fields of dc_jkr_state read by dc_dissip_adhesive_state are fuzzed
+   directly. Functions without a status (void, double) are checked for what
+   their headers promise. Prints the calls and statuses per function and
+   the time taken. */
+#include "check.h"
+#include "dc/contract.h"
+#include "dc/curvature.h"
+#include "dc/damping.h"
+#include "dc/dissipation_adhesive.h"
+#include "dc/elliptic_integrals.h"
+#include "dc/feng_rough.h"
+#include "dc/gw_integrals.h"
+#include "dc/gw_rough.h"
+#include "dc/gw_rough_adhesive.h"
+#include "dc/gw_solver.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/jkr_elliptic.h"
+#include "dc/mindlin.h"
+#include "dc/root_find.h"
+#include "dc/rough_tangential.h"
+#include "dc/status.h"
+#include <float.h>
+#include <limits.h>
+#include <stdarg.h>
+#include <time.h>
+
+#define N_CALLS 100000L
+
+/* ---------------------------------------------------------------- */
+/* Bookkeeping: one record per function.                             */
+
+typedef struct {
+  const char *name;
+  long calls, st[4], fails;
+  double seconds;
+  const char *why[8];   /* distinct failure reasons seen, and their counts */
+  long nwhy[8];
+} fz_fn;
+
+static fz_fn fz_all[96];
+static int fz_n;
+static struct timespec fz_t0;
+
+static double fz_now(void)
+{
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (double)(t.tv_sec - fz_t0.tv_sec) + 1e-9 * (double)(t.tv_nsec - fz_t0.tv_nsec);
+}
+
+static fz_fn *fz_new(const char *name)
+{
+  fz_fn *f = &fz_all[fz_n++];
+  f->name = name;
+  f->seconds = -fz_now();
+  return f;
+}
+
+static void fz_done(fz_fn *f) { f->seconds += fz_now(); }
+
+/* Counts a failure; prints the first three of each reason. */
+static void fz_fail(fz_fn *f, const char *why, int st, const char *fmt, ...)
+{
+  f->fails++;
+  check_failed_++;
+  int i = 0;
+  while (i < 8 && f->why[i] && f->why[i] != why) i++;
+  if (i < 8) {
+    f->why[i] = why;
+    if (++f->nwhy[i] > 3) return;   /* counted, not printed */
+  }
+  printf("FAIL %s: %s (status %d) at ", f->name, why, st);
+  va_list ap;
+  va_start(ap, fmt);
+  vprintf(fmt, ap);
+  va_end(ap);
+  printf("\n");
+}
+
+/* The contract for one call (file comment). in_bad: an input the function
+   reads is not finite; in_dom: the inputs lie in the documented domain;
+   untouched: the outputs still hold the sentinel; finite: every output
+   double is finite (and every other output field valid). */
+static const char *fz_verdict(fz_fn *f, int st, int in_bad, int in_dom, int untouched, int finite)
+{
+  f->calls++;
+  if (st < 0 || st > 3) return "status is not a dc_status";
+  f->st[st]++;
+  if (in_bad && st != DC_EDOM) return "non-finite input without DC_EDOM";
+  if (in_dom && st == DC_EDOM) return "DC_EDOM inside the documented domain";
+  if (st == DC_OK && !finite) return "DC_OK with a non-finite output";
+  if ((st == DC_EDOM || st == DC_ERANGE) && !untouched) return "error status with outputs written";
+  if (st == DC_ENOCONV && !untouched && !finite) return "DC_ENOCONV with a non-finite iterate";
+  check_passed_++;
+  return NULL;
+}
+
+#define FZ_CHECK(f, st, in_bad, in_dom, untouched, finite, ...)                              \
+  do {                                                                                        \
+    const int st_ = (st);                                                                     \
+    const char *why_ = fz_verdict((f), st_, (in_bad), (in_dom), (untouched), (finite));       \
+    if (why_) fz_fail((f), why_, st_, __VA_ARGS__);                                           \
+  } while (0)
+
+/* A further property of one call (not counted as a call). */
+#define FZ_EXPECT(f, ok, why, ...)                                                            \
+  do {                                                                                        \
+    if (ok) check_passed_++;                                                                  \
+    else fz_fail((f), (why), -1, __VA_ARGS__);                                                \
+  } while (0)
+
+/* Sentinel: a NaN byte pattern. */
+static unsigned char fz_ff[4096];
+#define SENTINEL(x) memset(&(x), 0xFF, sizeof(x))
+#define UNTOUCHED(x) (memcmp(&(x), fz_ff, sizeof(x)) == 0)
+
+static int fin(const double *p, int n)
+{
+  for (int i = 0; i < n; i++)
+    if (!isfinite(p[i])) return 0;
+  return 1;
+}
+/* all-double structs and arrays */
+#define FIN(x) fin((const double *)&(x), (int)(sizeof(x) / sizeof(double)))
+
+static int fin_args(int n, const double *a) { return fin(a, n); }
+#define ALLFIN(...) fin_args((int)(sizeof((double[]){__VA_ARGS__}) / sizeof(double)), (double[]){__VA_ARGS__})
+
+/* ---------------------------------------------------------------- */
+/* Argument generators (fixed seed).                                  */
+
+static unsigned long long fz_x = 0x9E3779B97F4A7C15ull;
+static double U(void) { return check_uniform(&fz_x); }
+static int UI(int n)
+{
+  const int k = (int)(U() * n);
+  return k < n ? k : n - 1;
+}
+static double fz_sign(double x) { return U() < 0.5 ? -x : x; }
+/* log-uniform in [lo, hi], 0 < lo <= hi */
+static double fz_log(double lo, double hi)
+{
+  const double a = log(lo), b = log(hi), x = exp(a + (b - a) * U());
+  return x < lo ? lo : x > hi ? hi : x;
+}
+static double fz_pos(void) { return fz_log(1e-320, DBL_MAX); }   /* any positive magnitude */
+static double fz_wide(void) { return fz_sign(fz_pos()); }
+static double fz_special(void)
+{
+  static const double v[] = {
+    0.0, -0.0, 1.0, -1.0, 0.5, -0.5, 2.0, 3.0, DBL_EPSILON, 1.0 - DBL_EPSILON / 2, 1.0 + DBL_EPSILON,
+    DBL_MIN, -DBL_MIN, DBL_TRUE_MIN, -DBL_TRUE_MIN, 0x1p-1060, -0x1p-1030, DBL_MAX, -DBL_MAX,
+    1e300, -1e300, 1e-300, -1e-300, 1e154, 1e-154, 1e200, 1e-200, INFINITY, -INFINITY, NAN, -NAN};
+  if (U() < 0.15) return fz_sign(ldexp(U(), -1022));   /* a subnormal */
+  return v[UI((int)(sizeof v / sizeof v[0]))];
+}
+static double fz_wild(void) { return U() < 0.35 ? fz_special() : fz_wide(); }
+/* x, or one to three ulps either side */
+static double fz_near(double x)
+{
+  for (int k = UI(7) - 3; k != 0; k -= (k > 0) - (k < 0)) x = nextafter(x, k > 0 ? INFINITY : -INFINITY);
+  return x;
+}
+#define PICK(...) fz_near(((const double[]){__VA_ARGS__})[UI((int)(sizeof((double[]){__VA_ARGS__}) / sizeof(double)))])
+
+/* How wild this call's arguments are: the probability that an argument is
+   replaced by a wild value (0: every argument typical). */
+static double fz_pw;
+static void fz_call(void)
+{
+  static const double p[5] = {0.0, 0.0, 0.03, 0.15, 1.0};
+  fz_pw = p[UI(5)];
+}
+static double A(double typical) { return U() < fz_pw ? fz_wild() : typical; }
+static int AI(int typical)
+{
+  static const int v[] = {-1, 0, 1, 2, 3, 4, 5, 7, -2, INT_MIN, INT_MAX, 1000, 1001};
+  if (U() >= fz_pw) return typical;
+  return U() < 0.8 ? v[UI((int)(sizeof v / sizeof v[0]))] : (int)(U() * 4294967296.0 - 2147483648.0);
+}
+
+/* log of a positive bound; -inf for 0 */
+static double lg(double x) { return log(fabs(x)); }
+#define LOG_MAX 709.78   /* ln DBL_MAX */
+
+/* ---------------------------------------------------------------- */
+/* Pools of constructor-made inputs.                                 */
+
+#define POOL 512
+static dc_hertz_geom hpool[POOL];
+static int nh;
+static dc_feng_law lpool[64];
+static int nl;
+static dc_jkr_geom jpool[POOL];
+static int nj;
+
+static void pool_hertz(const dc_hertz_geom *g)
+{
+  if (nh < POOL) hpool[nh++] = *g;
+  else hpool[UI(POOL)] = *g;
+}
+static void pool_jkr(const dc_jkr_geom *g)
+{
+  if (nj < POOL) jpool[nj++] = *g;
+  else jpool[UI(POOL)] = *g;
+}
+
+/* ---------------------------------------------------------------- */
+/* status.h, elliptic_integrals.h                                     */
+
+static void fuzz_status_str(void)
+{
+  fz_fn *f = fz_new("dc_status_str");
+  for (long k = 0; k < N_CALLS; k++) {
+    const int st = k < 8 ? (int)k - 2 : U() < 0.5 ? UI(8) - 2 : (int)(U() * 4294967296.0 - 2147483648.0);
+    const char *s = dc_status_str(st);
+    f->calls++;
+    FZ_EXPECT(f, s && s[0], "NULL or empty name", "status %d", st);
+  }
+  fz_done(f);
+}
+
+static void fuzz_ellint(void)
+{
+  fz_fn *f = fz_new("dc_ellint_m");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double r = U();
+    const double m = A(r < 0.3 ? U() : r < 0.6 ? 1.0 - fz_log(1e-17, 1.0) : r < 0.8 ? fz_log(1e-320, 1.0)
+                     : PICK(0.0, -0.0, DBL_TRUE_MIN, 0.5, 1.0 / 16, 15.0 / 16, 1.0, 1.0 - 0x1p-53));
+    dc_ellint out;
+    SENTINEL(out);
+    FZ_CHECK(f, dc_ellint_m(m, &out), !isfinite(m), m >= 0.0 && m < 1.0, UNTOUCHED(out), FIN(out),
+             "m = %.17g", m);
+  }
+  fz_done(f);
+  f = fz_new("dc_ellint_m1");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double r = U();
+    const double m1 = A(r < 0.3 ? U() : r < 0.7 ? fz_log(1e-320, 1.0)
+                        : PICK(0.0, -0.0, DBL_TRUE_MIN, DBL_MIN, 0.5, 1.0 / 16, 1.0, 0x1p-53));
+    dc_ellint out;
+    SENTINEL(out);
+    FZ_CHECK(f, dc_ellint_m1(m1, &out), !isfinite(m1), m1 > 0.0 && m1 <= 1.0, UNTOUCHED(out), FIN(out),
+             "m1 = %.17g", m1);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* curvature.h                                                        */
+
+/* a random unit vector, or an axis (either sign, -0 components), or one
+   near -z (the pole of the tangent-basis construction) */
+static void unit_vector(double n[3])
+{
+  const double r = U();
+  if (r < 0.6) {
+    const double z = 2.0 * U() - 1.0, ph = 2.0 * M_PI * U(), s = sqrt(fmax(0.0, 1.0 - z * z));
+    n[0] = s * cos(ph); n[1] = s * sin(ph); n[2] = z;
+  } else if (r < 0.8) {
+    n[0] = n[1] = n[2] = U() < 0.5 ? 0.0 : -0.0;
+    n[UI(3)] = U() < 0.5 ? 1.0 : -1.0;
+  } else {
+    const double e = fz_log(1e-300, 1e-3), ph = 2.0 * M_PI * U();
+    n[0] = e * cos(ph); n[1] = e * sin(ph); n[2] = (U() < 0.5 ? -1.0 : 1.0) * sqrt(1.0 - e * e);
+  }
+  const double l = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  for (int i = 0; i < 3; i++) n[i] /= l;
+}
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void fuzz_tangent_basis(void)
+{
+  fz_fn *f = fz_new("dc_tangent_basis");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double n[3], u[3], v[3];
+    unit_vector(n);
+    int unit = 1;
+    for (int i = 0; i < 3; i++) {
+      const double t = A(n[i]);
+      unit &= t == n[i] || (t == 0.0 && n[i] == 0.0);
+      n[i] = t;
+    }
+    SENTINEL(u);
+    SENTINEL(v);
+    dc_tangent_basis(n, u, v);
+    f->calls++;
+    if (!unit) continue;   /* outside the domain (a unit n): no promise */
+    double c[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double err = fmax(fmax(fabs(dot3(u, u) - 1.0), fabs(dot3(v, v) - 1.0)),
+                            fmax(fmax(fabs(dot3(u, v)), fabs(dot3(u, n))),
+                                 fmax(fabs(dot3(v, n)), fmax(fabs(c[0] - n[0]), fmax(fabs(c[1] - n[1]), fabs(c[2] - n[2]))))));
+    FZ_EXPECT(f, FIN(u) && FIN(v) && err < 1e-14, "not a finite right-handed orthonormal basis",
+              "n = (%.17g, %.17g, %.17g), error %.3g", n[0], n[1], n[2], err);
+  }
+  fz_done(f);
+}
+
+static void fuzz_curvature_form(void)
+{
+  fz_fn *f = fz_new("dc_curvature_form");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double grad[3], hess[9], u[3], v[3], n[3], form[3];
+    const double sg = U() < 0.3 ? 1.0 : fz_pos(), sh = U() < 0.3 ? 1.0 : fz_pos();
+    for (int i = 0; i < 3; i++) grad[i] = A(U() < 0.1 ? 0.0 : sg * (2.0 * U() - 1.0));
+    for (int i = 0; i < 3; i++)
+      for (int j = i; j < 3; j++) hess[3 * i + j] = hess[3 * j + i] = U() < 0.1 ? 0.0 : sh * (2.0 * U() - 1.0);
+    for (int i = 0; i < 9; i++) hess[i] = A(hess[i]);
+    unit_vector(n);
+    dc_tangent_basis(n, u, v);
+    for (int i = 0; i < 3; i++) { u[i] = A(u[i]); v[i] = A(v[i]); }
+    int bad = !fin(grad, 3) || !fin(hess, 9) || !fin(u, 3) || !fin(v, 3);
+    int sym = hess[1] == hess[3] && hess[2] == hess[6] && hess[5] == hess[7];
+    int dom = !bad && sym && (grad[0] != 0.0 || grad[1] != 0.0 || grad[2] != 0.0);
+    SENTINEL(form);
+    const int st = dc_curvature_form(grad, hess, u, v, form);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(form), FIN(form),
+             "grad (%.17g, %.17g, %.17g) hess (%.17g %.17g %.17g; %.17g %.17g %.17g; %.17g %.17g %.17g) "
+             "u (%.17g, %.17g, %.17g) v (%.17g, %.17g, %.17g)",
+             grad[0], grad[1], grad[2], hess[0], hess[1], hess[2], hess[3], hess[4], hess[5], hess[6], hess[7],
+             hess[8], u[0], u[1], u[2], v[0], v[1], v[2]);
+    /* |form| <= 9 max|H| max(max|u|, max|v|)^2 / max|grad| */
+    double mh = 0, mu = 0, mv = 0, mg = 0;
+    for (int i = 0; i < 9; i++) mh = fmax(mh, fabs(hess[i]));
+    for (int i = 0; i < 3; i++) { mu = fmax(mu, fabs(u[i])); mv = fmax(mv, fabs(v[i])); mg = fmax(mg, fabs(grad[i])); }
+    FZ_EXPECT(f, st != DC_ERANGE || lg(9.0) + lg(mh) + 2.0 * lg(fmax(mu, mv)) - lg(mg) > LOG_MAX - 1.0,
+              "DC_ERANGE for a representable form", "grad max %.17g hess max %.17g u max %.17g v max %.17g", mg, mh,
+              mu, mv);
+  }
+  fz_done(f);
+}
+
+/* a relative curvature form: positive definite with principal curvatures
+   within 1e6 of each other (clearly inside the domain), random otherwise */
+static void random_form(double form[3], int *pd)
+{
+  const double s = fz_log(1e-310, 1e308);
+  double a = s * fz_log(1e-6, 1.0), b = s * fz_log(1e-6, 1.0);
+  double c = sqrt(0.5) * sqrt(a) * sqrt(b) * (2.0 * U() - 1.0);
+  if (U() < 0.2) c = 0.0;
+  if (U() < 0.15) { a = fz_wide(); b = fz_wide(); c = fz_wide(); }
+  form[0] = A(a); form[1] = A(c); form[2] = A(b);
+  const double lo = fmin(form[0], form[2]), hi = fmax(form[0], form[2]);
+  *pd = fin(form, 3) && lo > 0.0 && lo >= 1e-6 * hi &&
+        fabs(form[1]) <= sqrt(0.5) * sqrt(form[0]) * sqrt(form[2]);
+}
+
+static void fuzz_form_principal(void)
+{
+  fz_fn *f = fz_new("dc_form_principal");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double form[3], out[3];
+    int pd;
+    random_form(form, &pd);
+    if (U() < 0.5)
+      for (int i = 0; i < 3; i++) form[i] = A(U() < 0.1 ? 0.0 : fz_sign(fz_log(1e-320, 1e307)));
+    SENTINEL(out);
+    const int want_theta = U() < 0.8;
+    dc_form_principal(form, &out[0], &out[1], want_theta ? &out[2] : NULL);
+    f->calls++;
+    /* promise: eigenvalues k1 >= k2 (and theta); finite when they are
+       representable, which |entries| <= 1e307 ensures */
+    if (!(fin(form, 3) && fabs(form[0]) <= 1e307 && fabs(form[1]) <= 1e307 && fabs(form[2]) <= 1e307)) continue;
+    FZ_EXPECT(f, isfinite(out[0]) && isfinite(out[1]) && out[0] >= out[1] && (!want_theta || isfinite(out[2])) &&
+                 (want_theta || isnan(out[2])),
+              "eigenvalues not finite, not ordered, or theta wrong",
+              "form (%.17g, %.17g, %.17g): k1 %.17g k2 %.17g theta %.17g", form[0], form[1], form[2], out[0], out[1],
+              out[2]);
+  }
+  fz_done(f);
+}
+
+static void fuzz_relative_radii(void)
+{
+  fz_fn *f = fz_new("dc_form_relative_radii");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double form[3], R[2];
+    int pd;
+    random_form(form, &pd);
+    SENTINEL(R);
+    const int st = dc_form_relative_radii(form, &R[0], &R[1]);
+    FZ_CHECK(f, st, !fin(form, 3), pd, UNTOUCHED(R), FIN(R) && R[0] >= R[1] && R[1] > 0.0,
+             "form (%.17g, %.17g, %.17g)", form[0], form[1], form[2]);
+  }
+  fz_done(f);
+  f = fz_new("dc_relative_radii");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double s = fz_log(1e-310, 1e308);
+    double c[4], R[2];
+    for (int i = 0; i < 4; i++) c[i] = A(U() < 0.15 ? 0.0 : U() < 0.1 ? fz_wide() : s * fz_log(1e-6, 1.0));
+    const double om = A(U() < 0.3 ? PICK(0.0, -0.0, M_PI / 2, M_PI, -M_PI / 4, 1e10) : 20.0 * U() - 10.0);
+    const int bad = !fin(c, 4) || !isfinite(om);
+    const double mx = fmax(fmax(c[0], c[1]), fmax(c[2], c[3]));
+    const int dom = !bad && c[0] >= 0.0 && c[1] >= 0.0 && c[2] >= 0.0 && c[3] >= 0.0 && mx > 0.0 &&
+                    fmin(c[0], c[1]) + fmin(c[2], c[3]) > 0.0 &&
+                    fmin(c[0], c[1]) + fmin(c[2], c[3]) >= 1e-6 * mx;
+    SENTINEL(R);
+    const int st = dc_relative_radii(c[0], c[1], c[2], c[3], om, &R[0], &R[1]);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(R), FIN(R) && R[0] >= R[1] && R[1] > 0.0,
+             "k (%.17g, %.17g, %.17g, %.17g) omega %.17g", c[0], c[1], c[2], c[3], om);
+  }
+  fz_done(f);
+}
+
+static void fuzz_form_major_axis(void)
+{
+  fz_fn *f = fz_new("dc_form_major_axis");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double form[3], n[3], u[3], v[3], axis[3];
+    int pd;
+    random_form(form, &pd);
+    if (U() < 0.2) form[2] = form[0] * (1.0 + (U() < 0.5 ? 0.0 : DBL_EPSILON * (UI(5) - 2)));   /* circular */
+    if (U() < 0.1) form[1] = 0.0;
+    unit_vector(n);
+    dc_tangent_basis(n, u, v);
+    SENTINEL(axis);
+    dc_form_major_axis(form, u, v, axis);
+    f->calls++;
+    /* promise: the unit direction of the smaller curvature in the plane,
+       or zero (circular to rounding, or not finite) */
+    const double l = sqrt(dot3(axis, axis));
+    if (!fin(form, 3)) {
+      FZ_EXPECT(f, axis[0] == 0.0 && axis[1] == 0.0 && axis[2] == 0.0, "not zero for a non-finite form",
+                "form (%.17g, %.17g, %.17g)", form[0], form[1], form[2]);
+      continue;
+    }
+    int ok = FIN(axis) && (l == 0.0 || (fabs(l - 1.0) < 1e-14 && fabs(dot3(axis, n)) < 1e-14));
+    if (ok && l > 0.0) {
+      /* (form - k2 I) x = 0 in the (u, v) coordinates of the axis, to
+         rounding of the form's largest entry (backward error) */
+      const double sc = fmax(fabs(form[0]), fmax(fabs(form[1]), fabs(form[2])));
+      const double fs[3] = {form[0] / sc, form[1] / sc, form[2] / sc};
+      double k1, k2;
+      dc_form_principal(fs, &k1, &k2, NULL);
+      const double x = dot3(axis, u), y = dot3(axis, v);
+      const double r0 = (fs[0] - k2) * x + fs[1] * y, r1 = fs[1] * x + (fs[2] - k2) * y;
+      ok = fabs(r0) + fabs(r1) < 1e-13;
+    }
+    FZ_EXPECT(f, ok, "not a unit eigenvector of the smaller curvature in the plane, nor zero",
+              "form (%.17g, %.17g, %.17g): axis (%.17g, %.17g, %.17g)", form[0], form[1], form[2], axis[0], axis[1],
+              axis[2]);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* hertz_elliptic.h                                                   */
+
+static double hertz_ratio(void)
+{
+  const double r = U();
+  return r < 0.4 ? fz_log(DC_HERTZ_RATIO_MIN, 1.0) : r < 0.7 ? 1.0 - fz_log(1e-17, 0.75)
+         : PICK(DC_HERTZ_RATIO_MIN, 1.0, 0.25, 0.0, -0.0, 1e-13, 2.0);
+}
+
+static void fuzz_hertz_eccentricity(void)
+{
+  fz_fn *f = fz_new("dc_hertz_eccentricity");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double r = A(hertz_ratio());
+    double out[2];
+    SENTINEL(out);
+    FZ_CHECK(f, dc_hertz_eccentricity(r, &out[0], &out[1]), !isfinite(r), r >= DC_HERTZ_RATIO_MIN && r <= 1.0,
+             UNTOUCHED(out), FIN(out), "ratio %.17g", r);
+  }
+  fz_done(f);
+  f = fz_new("dc_hertz_eccentricity_approx");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double r = A(hertz_ratio());
+    double e2;
+    SENTINEL(e2);
+    FZ_CHECK(f, dc_hertz_eccentricity_approx(r, &e2), !isfinite(r), r >= DC_HERTZ_RATIO_MIN && r <= 1.0,
+             UNTOUCHED(e2), isfinite(e2), "ratio %.17g", r);
+  }
+  fz_done(f);
+}
+
+static void fuzz_hertz_geometry(void)
+{
+  fz_fn *f = fz_new("dc_hertz_geometry");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double R1 = U() < 0.3 ? fz_log(1e-6, 1.0) : U() < 0.1 ? PICK(DBL_MAX, DBL_MIN, DBL_TRUE_MIN, 1e308) : fz_pos();
+    double R2 = U() < 0.2 ? fz_pos() : R1 * hertz_ratio();
+    if (k == 0) { R1 = 2.3e268; R2 = 4.5e256; }   /* the reported case */
+    if (U() < 0.5) { const double t = R1; R1 = R2; R2 = t; }
+    R1 = A(R1);
+    R2 = A(R2);
+    const double mx = fmax(R1, R2), mn = fmin(R1, R2);
+    const int dom = isfinite(R1) && isfinite(R2) && R1 > 0.0 && R2 > 0.0 && mn / mx >= DC_HERTZ_RATIO_MIN;
+    dc_hertz_geom g;
+    SENTINEL(g);
+    const int st = dc_hertz_geometry(R1, R2, &g);
+    FZ_CHECK(f, st, !isfinite(R1) || !isfinite(R2), dom, UNTOUCHED(g),
+             FIN(g) && g.R_major >= g.R_minor && g.e2 >= 0.0 && g.e2 < 1.0 && g.m1 > 0.0 && g.m1 <= 1.0,
+             "R1 %.17g R2 %.17g", R1, R2);
+    if (st == DC_OK) {
+      /* Rc = R_minor/(1 + R_minor/R_major) to rounding (a few ulps: both
+         forms round three times) wherever it is normal */
+      const double rc = mn / (1.0 + mn / mx);
+      FZ_EXPECT(f, !(rc >= DBL_MIN) || fabs(g.Rc / rc - 1.0) < 1e-15, "Rc inaccurate",
+                "R1 %.17g R2 %.17g: Rc %.17g, want %.17g", R1, R2, g.Rc, rc);
+      pool_hertz(&g);
+    }
+    /* Rc, R_force = Rc gamma^2 and R_area = Rc beta are all <= R_major */
+    FZ_EXPECT(f, st != DC_ERANGE, "DC_ERANGE for a representable geometry", "R1 %.17g R2 %.17g", R1, R2);
+  }
+  fz_done(f);
+}
+
+/* log of an upper bound of the largest output of dc_hertz_contact */
+static double hertz_bound(const dc_hertz_geom *g, double E, double d)
+{
+  const double lF = lg(4.0 / 3.0) + lg(E) + 0.5 * (lg(g->R_force) + lg(d)) + lg(d);
+  const double lk = lg(2.0) + lg(E) + 0.5 * (lg(g->R_force) + lg(d));
+  const double lA = lg(M_PI) + lg(g->R_area) + lg(d);
+  const double la = 0.5 * (lg(2.0) + lg(g->R_major) + lg(d) + lg(g->D / g->K));
+  return fmax(fmax(lF, lk), fmax(lA, la));
+}
+
+static void fuzz_hertz_contact(void)
+{
+  fz_fn *f = fz_new("dc_hertz_contact");
+  fz_fn *fs = fz_new("dc_hertz_stiffness");
+  fs->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : U() < 0.1 ? PICK(DBL_MAX, DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.3 ? g->R_minor * fz_log(1e-12, 1.0) : U() < 0.1 ? PICK(0.0, -0.0, DBL_MAX) : fz_pos());
+    dc_hertz_state s;
+    SENTINEL(s);
+    const int st = dc_hertz_contact(g, E, d, &s);
+    FZ_CHECK(f, st, !isfinite(E) || !isfinite(d), isfinite(E) && E > 0.0 && isfinite(d) && d >= 0.0, UNTOUCHED(s),
+             FIN(s), "R_major %.17g R_minor %.17g Estar %.17g delta %.17g", g->R_major, g->R_minor, E, d);
+    FZ_EXPECT(f, st != DC_ERANGE || hertz_bound(g, E, d) > LOG_MAX - 2.0, "DC_ERANGE for a representable state",
+              "R_major %.17g R_minor %.17g Estar %.17g delta %.17g", g->R_major, g->R_minor, E, d);
+    /* the inline hot-path kernel (unchecked): the checked contact's kn and
+       F = kn delta, bit for bit, wherever its products stay finite */
+    fs->seconds -= fz_now();
+    double kn, S;
+    const double root = dc_hertz_stiffness(E, g->R_force, d, &kn, &S);
+    fs->calls++;
+    if (st == DC_OK && isfinite(root) && isfinite(kn) && isfinite(kn * d) && isfinite(S))
+      FZ_EXPECT(fs, S == s.kn && kn * d == s.F, "differs from dc_hertz_contact",
+                "R_force %.17g Estar %.17g delta %.17g: kn %.17g S %.17g vs F %.17g kn %.17g", g->R_force, E, d, kn,
+                S, s.F, s.kn);
+    fs->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+static int contact_ok(const dc_contact *c)
+{
+  return (c->formed == 0 || c->formed == 1) && ALLFIN(c->F, c->kn, c->area, c->a, c->b, c->F_bound);
+}
+
+static void fuzz_hertz_normal(void)
+{
+  fz_fn *f = fz_new("dc_hertz_normal");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : fz_pos());
+    const double d = A(U() < 0.4 ? g->R_minor * fz_sign(fz_log(1e-12, 1.0)) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    dc_contact c;
+    SENTINEL(c);
+    const int st = dc_hertz_normal(g, E, d, &c);
+    FZ_CHECK(f, st, !ALLFIN(E, d), ALLFIN(E, d) && E > 0.0, UNTOUCHED(c), contact_ok(&c),
+             "R_major %.17g R_minor %.17g Estar %.17g delta %.17g", g->R_major, g->R_minor, E, d);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_integrals.h, gw_rough.h                                         */
+
+static double gw_h(void)
+{
+  const double r = U();
+  return r < 0.4 ? -12.0 + 57.0 * U() : r < 0.7 ? fz_sign(fz_log(1e-320, 1e100))
+         : PICK(DC_GW_H_MIN, -10.0, -0.0, 0.0, 20.0, 38.6, 40.0, 1e100, -1e100 * 1.0000001);
+}
+
+static void fuzz_gw_integrals(void)
+{
+  fz_fn *f = fz_new("dc_gw_F");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int o = AI(UI(4));
+    const double h = A(gw_h());
+    double F;
+    SENTINEL(F);
+    FZ_CHECK(f, dc_gw_F(o, h, &F), !isfinite(h), o >= 0 && o <= 3 && isfinite(h) && h >= DC_GW_H_MIN,
+             UNTOUCHED(F), isfinite(F), "order %d h %.17g", o, h);
+  }
+  fz_done(f);
+  f = fz_new("dc_gw_F_all");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double h = A(gw_h());
+    double F[4];
+    SENTINEL(F);
+    FZ_CHECK(f, dc_gw_F_all(h, F), !isfinite(h), isfinite(h) && h >= DC_GW_H_MIN, UNTOUCHED(F), FIN(F),
+             "h %.17g", h);
+  }
+  fz_done(f);
+  f = fz_new("dc_gw_F_closed");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int o = AI(UI(4));
+    const double h = A(gw_h());
+    double F;
+    SENTINEL(F);
+    FZ_CHECK(f, dc_gw_F_closed(o, h, &F), !isfinite(h), o >= 0 && o <= 3 && isfinite(h) && h >= DC_GW_H_MIN,
+             UNTOUCHED(F), isfinite(F), "order %d h %.17g", o, h);
+  }
+  fz_done(f);
+}
+
+static void fuzz_gw_rough(void)
+{
+  fz_fn *fc = fz_new("dc_gw_roughness_combine");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double a = U() < 0.2 ? 0.0 : fz_pos(), b = U() < 0.2 ? 0.0 : fz_pos();
+    const double c = dc_gw_roughness_combine(a, b);
+    fc->calls++;
+    /* (a^2 + b^2)^1/2 in [max, 2^1/2 max]: finite and nonzero where that is */
+    const double mx = fmax(a, b);
+    FZ_EXPECT(fc, c >= mx && (mx > DBL_MAX / 1.5 || c <= 1.4142135623730951 * mx * (1.0 + 4.0 * DBL_EPSILON)),
+              "not (a^2 + b^2)^1/2", "%.17g %.17g: %.17g", a, b, c);
+  }
+  fz_done(fc);
+  fz_fn *fn = fz_new("dc_gw_rough_normal");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : fz_pos());
+    const double d = A(U() < 0.4 ? g->R_minor * fz_sign(fz_log(1e-12, 1.0)) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const double F = A(U() < 0.5 ? fz_sign(fz_log(1e-12, 1e6)) : fz_wide()), kn = A(fz_wide());
+    dc_contact c;
+    SENTINEL(c);
+    const int st = dc_gw_rough_normal(g, E, d, F, kn, &c);
+    FZ_CHECK(fn, st, !ALLFIN(E, d, F, kn), ALLFIN(E, d, F, kn) && E > 0.0, UNTOUCHED(c), contact_ok(&c),
+             "R_major %.17g R_minor %.17g Estar %.17g delta %.17g F %.17g kn %.17g", g->R_major, g->R_minor, E, d, F, kn);
+  }
+  fz_done(fn);
+  fz_fn *f = fz_new("dc_gw_rough_elliptic");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : fz_pos());
+    const double n = A(U() < 0.3 ? fz_log(1e-2, 1e6) : fz_pos());
+    const double sg = A(U() < 0.3 ? g->R_minor * fz_log(1e-9, 1e-3) : U() < 0.2 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.5 ? sg * (-12.0 + 60.0 * U()) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(E, n, sg, d);
+    const int dom = !bad && E > 0.0 && n > 0.0 && sg >= 0.0;
+    dc_gw_rough_state s;
+    SENTINEL(s);
+    const int st = dc_gw_rough_elliptic(g, E, n, sg, d, &s);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(s), FIN(s),
+             "R_major %.17g R_minor %.17g Estar %.17g n_asp %.17g sigma %.17g delta %.17g", g->R_major, g->R_minor,
+             E, n, sg, d);
+    if (st == DC_ERANGE) {
+      /* bound: sigma^(3/2) F_3/2(h) <= (sigma + |delta|)^3/2 F_3/2(0) 2^3/2
+         and the like; the Hertz bound for the smooth limit */
+      const double x = sg + fabs(d);
+      const double b = lg(n) + fmax(fmax(hertz_bound(g, E, fabs(d)), lg(M_PI) + lg(g->Rc) + lg(x) + lg(g->beta) + lg(2.0)),
+                                    lg(E) + 0.5 * lg(g->Rc) + 0.5 * lg(x) + fmax(lg(x), 0.0) + lg(g->gamma) + lg(4.0));
+      FZ_EXPECT(f, b > LOG_MAX - 2.0, "DC_ERANGE for a representable state",
+                "R_major %.17g R_minor %.17g Estar %.17g n_asp %.17g sigma %.17g delta %.17g", g->R_major,
+                g->R_minor, E, n, sg, d);
+    }
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* feng_rough.h                                                       */
+
+static void fuzz_feng_init(void)
+{
+  fz_fn *f = fz_new("dc_feng_init");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double mu = A(U() < 0.6 ? 1.0 + 49.0 * U() : PICK(1.0, 2.0, 4.0, 10.0, 20.0, 35.0, 50.0));
+    const int var = AI(UI(2));
+    dc_feng_law law;
+    SENTINEL(law);
+    const int st = dc_feng_init(mu, var, &law);
+    FZ_CHECK(f, st, !isfinite(mu), mu >= DC_FENG_MU_MIN && mu <= DC_FENG_MU_MAX && (var == 0 || var == 1),
+             UNTOUCHED(law), FIN(law), "mu %.17g variant %d", mu, var);
+    if (st == DC_OK) {
+      if (nl < 64) lpool[nl++] = law;
+      else lpool[UI(64)] = law;
+    }
+  }
+  fz_done(f);
+  f = fz_new("dc_feng_P1");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_feng_law *law = &lpool[UI(nl)];
+    const double x = A(U() < 0.7 ? U() : PICK(0.0, -0.0, 1.0 / 3, 2.0 / 3, 1.0));
+    const double P = dc_feng_P1(law, x);
+    f->calls++;
+    if (x >= 0.0 && x <= 1.0)
+      FZ_EXPECT(f, isfinite(P), "not finite on [0, 1]", "mu %.17g alpha %.17g: %.17g", law->mu, x, P);
+  }
+  fz_done(f);
+  f = fz_new("dc_feng_pstar_sigma");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_feng_law *law = &lpool[UI(nl)];
+    const double x = A(U() < 0.6 ? -5.0 + 9.0 * U() : U() < 0.5 ? fz_wide() : PICK(-3.0, -0.0, 0.0, 1.0, 0.5, -0.75));
+    const double P = dc_feng_pstar_sigma(law, x);
+    f->calls++;
+    FZ_EXPECT(f, isnan(x) || (!isnan(P) && (fabs(x) > 1e200 || isfinite(P))), "NaN, or not finite for |alpha'| <= 1e200",
+              "mu %.17g alpha' %.17g: %.17g", law->mu, x, P);
+  }
+  fz_done(f);
+}
+
+static void fuzz_feng_force(void)
+{
+  fz_fn *f = fz_new("dc_feng_force");
+  fz_fn *fp = fz_new("dc_feng_pair_init");
+  fz_fn *ff = fz_new("dc_feng_pair_force");
+  fp->seconds = ff->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_feng_law *law = &lpool[UI(nl)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : fz_pos());
+    const double R = A(U() < 0.3 ? fz_log(1e-6, 1.0) : fz_pos());
+    double sg = U() < 0.3 ? R * fz_log(1e-9, 1e-2) : U() < 0.3 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN, 1e-310) : fz_pos();
+    if (k < 4) sg = ldexp(1.0, -1030 - (int)k);   /* the reported case: subnormal sigma */
+    sg = A(sg);
+    const double d = A(U() < 0.6 ? sg * (-4.0 + 8.0 * U()) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(E, R, sg, d);
+    double out[2];
+    SENTINEL(out);
+    const int st = dc_feng_force(law, E, R, sg, d, &out[0], &out[1]);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && R > 0.0 && sg >= 0.0, UNTOUCHED(out), FIN(out),
+             "mu %.17g Estar %.17g R %.17g sigma %.17g delta %.17g", law->mu, E, R, sg, d);
+    /* |P| <= 4/3 E* R^1/2 max(delta, 3 sigma)^3/2 max |P*| (P* < 4 here), kn likewise */
+    const double x = fmax(fabs(d), 3.0 * sg);
+    const double b = lg(E) + 0.5 * lg(R) + 0.5 * lg(x) + fmax(lg(x), 0.0) + lg(40.0);
+    FZ_EXPECT(f, st != DC_ERANGE || b > LOG_MAX - 2.0, "DC_ERANGE for a representable force",
+              "mu %.17g Estar %.17g R %.17g sigma %.17g delta %.17g", law->mu, E, R, sg, d);
+    /* the bound pair: same domain without sigma = 0 */
+    fp->seconds -= fz_now();
+    dc_feng_pair p;
+    SENTINEL(p);
+    const int sp = dc_feng_pair_init(law, E, sg, &p);
+    fp->seconds += fz_now();
+    FZ_CHECK(fp, sp, !isfinite(E) || !isfinite(sg), isfinite(E) && isfinite(sg) && E > 0.0 && sg > 0.0,
+             UNTOUCHED(p), FIN(p), "mu %.17g Estar %.17g sigma %.17g", law->mu, E, sg);
+    if (sp != DC_OK || !(R > 0.0 && isfinite(R) && isfinite(d))) continue;
+    /* the unchecked kernel: the checked force's value wherever its
+       products stay in range (c R^1/2 and c R^1/2 max(delta, sigma)^3/2) */
+    for (int j = 0; j < 3; j++) {   /* three overlaps per bound pair */
+      const double dj = j == 0 ? d : U() < 0.7 ? sg * (-4.0 + 8.0 * U()) : fz_wide();
+      double o[2] = {out[0], out[1]};
+      int sj = st;
+      if (j > 0) sj = dc_feng_force(law, E, R, sg, dj, &o[0], &o[1]);
+      const double xj = fmax(fabs(dj), 3.0 * sg);
+      const double bj = lg(E) + 0.5 * lg(R) + 0.5 * lg(xj) + fmax(lg(xj), 0.0) + lg(40.0);
+      ff->seconds -= fz_now();
+      double q[2];
+      dc_feng_pair_force(&p, sqrt(R), dj, &q[0], &q[1]);
+      ff->seconds += fz_now();
+      ff->calls++;
+      if (bj < LOG_MAX - 5.0 && lg(E) + 0.5 * lg(R) < LOG_MAX - 5.0)
+        FZ_EXPECT(ff, sj == DC_OK && q[0] == o[0] && q[1] == o[1], "differs from dc_feng_force",
+                  "mu %.17g Estar %.17g R %.17g sigma %.17g delta %.17g: %.17g %.17g vs %.17g %.17g", law->mu, E, R,
+                  sg, dj, q[0], q[1], o[0], o[1]);
+    }
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_solver.h                                                        */
+
+static void fuzz_gw_solver(void)
+{
+  fz_fn *f = fz_new("dc_gw_solve_default_opts");
+  for (long k = 0; k < N_CALLS; k++) {
+    const dc_gw_solve_opts o = dc_gw_solve_default_opts();
+    f->calls++;
+    FZ_EXPECT(f, o.domain_scale == 1.0 && o.abar == 0.0 && o.force_mode == DC_GW_FORCE_FULL &&
+                 o.f32_mode == DC_GW_F32_EXACT && o.tol == 1e-12 && o.max_iter == 50,
+              "not the documented defaults", "call %ld", k);
+  }
+  fz_done(f);
+  /* init: every m, in-range ones mostly small (the m x m influence table
+     costs m^2 elliptic integrals), and a few large */
+  f = fz_new("dc_gw_solver_init");
+  fz_fn *fr = fz_new("dc_gw_solver_free");
+  for (long k = 0; f->calls < N_CALLS || fr->calls < N_CALLS; k++) {
+    fz_call();
+    const double r = U();
+    int m = r < 0.5 ? 2 + UI(8) : r < 0.8 ? -3 + UI(16) : r < 0.95 ? (int[]){0, 1, -1, 1001, INT_MIN, INT_MAX}[UI(6)]
+            : (int)(U() * 4294967296.0 - 2147483648.0);
+    if (k < 3) m = (int[]){1000, 1001, 200}[k];
+    dc_gw_solver S;
+    SENTINEL(S);
+    const int st = dc_gw_solver_init(&S, m);
+    int ok = st != DC_OK || (S.m == m && S.x && S.s && S.alpha);
+    if (st == DC_OK && ok) {
+      ok = fin(S.x, m) && fin(S.s, m) && fin(S.alpha, m * m);
+      for (int i = 0; i < m; i++) ok &= S.x[i] > 0.0 && S.x[i] < 1.0 && S.s[i] > 0.0;
+    }
+    FZ_CHECK(f, st, 0, m >= 2 && m <= 1000, UNTOUCHED(S), ok, "m %d", m);
+    if (st == DC_OK) {
+      dc_gw_solver_free(&S);
+      fr->calls++;
+      FZ_EXPECT(fr, !S.x && !S.s && !S.alpha, "pointers not cleared", "m %d", m);
+    }
+  }
+  fz_done(f);
+  fz_done(fr);
+  fr->seconds = 0.0;   /* inside init's time */
+}
+
+/* dc_gw_solve: 1e5 calls like the others, but on small m (2 .. 12, and
+   m = 40 every 200th call): each is a Newton solve of up to 50 iterations
+   on m points plus the outer force integral, and the tested paths are the
+   same for every m. */
+static void fuzz_gw_solve(void)
+{
+  enum { NS = 6 };
+  const int ms[NS] = {2, 3, 5, 8, 12, 40};
+  dc_gw_solver S[NS];
+  for (int i = 0; i < NS; i++) dc_gw_solver_init(&S[i], ms[i]);
+  fz_fn *f = fz_new("dc_gw_solve");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int is = k % 200 == 0 ? NS - 1 : UI(NS - 1);
+    const double ap = A(U() < 0.6 ? -10.0 + 30.0 * U() : U() < 0.5 ? fz_log(1e-3, 1e4) : PICK(-10.0, 0.0, -0.0, 1e4, 1.0));
+    const double mu = A(U() < 0.6 ? fz_log(0.1, 100.0) : PICK(1e3, DBL_TRUE_MIN, 1e-300, 1.0));
+    dc_gw_solve_opts o = dc_gw_solve_default_opts();
+    o.domain_scale = A(U() < 0.7 ? 1.0 : fz_log(0.3, 3.0));
+    o.abar = A(U() < 0.8 ? 0.0 : fz_log(0.5, 30.0));
+    o.force_mode = AI(UI(2));
+    o.f32_mode = AI(UI(2));
+    o.tol = A(U() < 0.8 ? 1e-12 : PICK(0.0, 1e-15, 1e-6, -1.0));
+    o.max_iter = U() < 0.8 ? 50 : U() < 0.5 ? 1 + UI(60) : (int[]){0, -1, INT_MIN}[UI(3)];
+    const int bad = !ALLFIN(ap, mu, o.domain_scale, o.abar, o.tol);
+    const int dom = !bad && ap >= -10.0 && ap <= 1e4 && mu > 0.0 && mu <= 1e3 && o.domain_scale >= 0.3 &&
+                    o.domain_scale <= 3.0 && o.abar >= 0.0 && o.abar <= 30.0 && o.max_iter > 0 &&
+                    (o.force_mode == 0 || o.force_mode == 1) && (o.f32_mode == 0 || o.f32_mode == 1) &&
+                    o.tol >= 0.0;
+    dc_gw_solve_result r;
+    SENTINEL(r);
+    const int st = dc_gw_solve(&S[is], ap, mu, &o, &r);
+    int ok = r.iterations >= 1 && r.iterations <= o.max_iter && isfinite(r.Pstar_sigma) && isfinite(r.Pstar_delta) &&
+             isfinite(r.abar) && isfinite(r.p0);
+    if (ok) ok = fin(r.hist, r.iterations < DC_GW_SOLVER_MAX_HIST ? r.iterations : DC_GW_SOLVER_MAX_HIST);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(r), ok,
+             "m %d alpha' %.17g mu %.17g domain_scale %.17g abar %.17g force %d f32 %d tol %.17g max_iter %d", ms[is],
+             ap, mu, o.domain_scale, o.abar, o.force_mode, o.f32_mode, o.tol, o.max_iter);
+    /* inside the domain, only P/P_h(delta) can overflow (alpha' > 0 tiny) */
+    FZ_EXPECT(f, st != DC_ERANGE || !dom || (ap > 0.0 && ap < 1e-200), "DC_ERANGE for a representable result",
+              "m %d alpha' %.17g mu %.17g domain_scale %.17g abar %.17g force %d f32 %d tol %.17g max_iter %d",
+              ms[is], ap, mu, o.domain_scale, o.abar, o.force_mode, o.f32_mode, o.tol, o.max_iter);
+  }
+  fz_done(f);
+  for (int i = 0; i < NS; i++) dc_gw_solver_free(&S[i]);
+}
+
+/* ---------------------------------------------------------------- */
+/* rough_tangential.h                                                 */
+
+static void fuzz_rough_tangential(void)
+{
+  fz_fn *f = fz_new("dc_mindlin_chi");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double nu = A(U() < 0.7 ? 0.5 * U() : PICK(0.0, 0.5, -0.0, -0.1, 0.6));
+    const double th = A(U() < 0.7 ? -7.0 + 14.0 * U() : fz_wide());
+    double chi;
+    SENTINEL(chi);
+    FZ_CHECK(f, dc_mindlin_chi(g, nu, th, &chi), !isfinite(nu) || !isfinite(th),
+             nu >= 0.0 && nu <= 0.5 && isfinite(th), UNTOUCHED(chi), isfinite(chi) && chi > 0.0,
+             "R_major %.17g R_minor %.17g nu %.17g theta %.17g", g->R_major, g->R_minor, nu, th);
+  }
+  fz_done(f);
+  f = fz_new("dc_rough_tangential_stiffness");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double G = A(U() < 0.3 ? fz_log(1e6, 1e11) : fz_pos());
+    const double chi = A(U() < 0.3 ? 0.3 + 0.2 * U() : fz_pos());
+    const double n = A(U() < 0.3 ? fz_log(1e-2, 1e6) : fz_pos());
+    const double R = A(U() < 0.3 ? fz_log(1e-9, 1e-3) : fz_pos());
+    const double sg = A(U() < 0.3 ? R * fz_log(1e-9, 1e-3) : U() < 0.2 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.5 ? sg * (-12.0 + 60.0 * U()) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(G, chi, n, R, sg, d);
+    double kt;
+    SENTINEL(kt);
+    const int st = dc_rough_tangential_stiffness(G, chi, n, R, sg, d, &kt);
+    FZ_CHECK(f, st, bad, !bad && G > 0.0 && chi > 0.0 && n > 0.0 && R > 0.0 && sg >= 0.0, UNTOUCHED(kt),
+             isfinite(kt), "G %.17g chi %.17g n_asp %.17g R_asp %.17g sigma %.17g delta %.17g", G, chi, n, R, sg, d);
+    /* k_t <= 2 pi n G chi (R_asp (sigma + |delta|))^1/2 F_1/2(0) 2^1/2 */
+    const double b = lg(2.0 * M_PI) + lg(n) + lg(G) + lg(chi) + 0.5 * (lg(R) + lg(sg + fabs(d)));
+    FZ_EXPECT(f, st != DC_ERANGE || b > LOG_MAX - 2.0, "DC_ERANGE for a representable stiffness",
+              "G %.17g chi %.17g n_asp %.17g R_asp %.17g sigma %.17g delta %.17g", G, chi, n, R, sg, d);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* jkr_elliptic.h                                                     */
+
+static int jkr_state_ok(const dc_jkr_state *s)
+{
+  return (s->contact == 0 || s->contact == 1) &&
+         ALLFIN(s->F, s->delta, s->a, s->b, s->area, s->e2, s->kn);
+}
+
+static int jkr_geom_ok(const dc_jkr_geom *g)
+{
+  return (g->circular == 0 || g->circular == 1) && (g->use_m1 == 0 || g->use_m1 == 1) && FIN(g->hertz) &&
+         ALLFIN(g->R_major, g->R_minor, g->Rhat, g->lambda, g->lam2, g->l2c, g->Estar, g->w, g->e2_hertz,
+                g->a_scale, g->delta_scale, g->F_scale, g->e2_break, g->delta_break, g->F_break, g->dbar_break,
+                g->e2_pull, g->delta_pull, g->F_pull, g->guess_c1, g->guess_c2, g->pert_X0, g->pert_X1,
+                g->pert_g0, g->pert_g1, g->pert_P0, g->pert_P1, g->pert_rho0, g->dbar_switch, g->v_hertz,
+                g->v_break);
+}
+
+#define JS_FMT "F %.17g delta %.17g a %.17g b %.17g area %.17g e2 %.17g kn %.17g contact %d"
+#define JS_ARGS(s) (s).F, (s).delta, (s).a, (s).b, (s).area, (s).e2, (s).kn, (s).contact
+
+/* typical work of adhesion for R, E*: the JKR length scale (w R^2/E*)^1/3
+   from 1e-12 R to 10 R */
+static double jkr_w(double R, double E)
+{
+  const double r = U();
+  if (r < 0.1) return 0.0;
+  if (r < 0.4) return fz_log(1e-3, 1.0);
+  return E * R * pow(fz_log(1e-12, 10.0), 3.0) * (U() < 0.5 ? 1.0 : fz_log(1e-20, 1.0));
+}
+
+static void fuzz_jkr_sphere(void)
+{
+  fz_fn *f = fz_new("dc_jkr_sphere");
+  fz_fn *fa = fz_new("dc_jkr_sphere_at_radius");
+  fz_fn *fp = fz_new("dc_jkr_sphere_pulloff");
+  fz_fn *fb = fz_new("dc_jkr_sphere_delta_break");
+  fa->seconds = fp->seconds = fb->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R = A(U() < 0.4 ? fz_log(1e-7, 1e-2) : fz_pos());
+    const double E = A(U() < 0.4 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(jkr_w(R, E));
+    const double db = dc_jkr_sphere_delta_break(fabs(R), fabs(E), fabs(w));
+    const double d = A(U() < 0.6 && isfinite(db) && db < 0.0 ? db * (U() < 0.3 ? PICK(1.0, 1.0 - 1e-12, 0.999) : -20.0 + 22.0 * U())
+                       : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(R, E, w, d);
+    const int dom = !bad && R > 0.0 && E > 0.0 && w >= 0.0;
+    dc_jkr_state s;
+    SENTINEL(s);
+    FZ_CHECK(f, dc_jkr_sphere(R, E, w, d, &s), bad, dom, UNTOUCHED(s), jkr_state_ok(&s),
+             "R %.17g Estar %.17g w %.17g delta %.17g: " JS_FMT, R, E, w, d, JS_ARGS(s));
+    /* at a radius: a from the JKR scale */
+    fa->seconds -= fz_now();
+    const double a = A(U() < 0.6 ? cbrt(fabs(w) * R * R / E) * fz_log(1e-6, 1e6) : fz_pos());
+    SENTINEL(s);
+    FZ_CHECK(fa, dc_jkr_sphere_at_radius(R, E, w, a, &s), !ALLFIN(R, E, w, a), dom && a > 0.0 && isfinite(a),
+             UNTOUCHED(s), jkr_state_ok(&s), "R %.17g Estar %.17g w %.17g a %.17g: " JS_FMT, R, E, w, a, JS_ARGS(s));
+    fa->seconds += fz_now();
+    /* the two double-valued functions: never NaN inside the domain */
+    fp->seconds -= fz_now();
+    const double P = dc_jkr_sphere_pulloff(R, w);
+    fp->calls++;
+    if (dom) FZ_EXPECT(fp, !isnan(P), "NaN inside the domain", "R %.17g w %.17g", R, w);
+    fp->seconds += fz_now();
+    fb->seconds -= fz_now();
+    const double B = dc_jkr_sphere_delta_break(R, E, w);
+    fb->calls++;
+    /* |delta_break| = 3/4 (pi^2 w^2 R / E*^2)^1/3: finite wherever that is */
+    const double lb = lg(0.75) + (2.0 * lg(M_PI) + 2.0 * lg(w) + lg(R) - 2.0 * lg(E)) / 3.0;
+    if (dom) FZ_EXPECT(fb, !isnan(B) && (isfinite(B) || lb > LOG_MAX - 1.0), "NaN, or not finite where representable",
+                       "R %.17g Estar %.17g w %.17g: %.17g", R, E, w, B);
+    fb->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+static void fuzz_jkr_check(void)
+{
+  fz_fn *f = fz_new("dc_jkr_check");
+  fz_fn *fl = fz_new("dc_jkr_friction_load");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double w = A(U() < 0.5 ? fz_log(1e-6, 1.0) : PICK(0.0, -0.0, -DBL_TRUE_MIN, DBL_MAX));
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_jkr_check(w, &err);
+    /* the error report is the documented DC_EDOM output (see fuzz_param_check) */
+    FZ_CHECK(f, st, !isfinite(w), isfinite(w) && w >= 0.0, 1, UNTOUCHED(err), "w %.17g", w);
+    FZ_EXPECT(f, st == DC_OK || (err.name && err.range && memcmp(&err.value, &w, sizeof w) == 0),
+              "no error report on DC_EDOM", "w %.17g", w);
+    const double F = fz_wide(), P = fz_wide(), L = dc_jkr_friction_load(F, P);
+    fl->calls++;
+    FZ_EXPECT(fl, !memcmp(&L, &(double){F + 2.0 * P}, sizeof L), "not F + 2 F_pulloff", "%.17g %.17g", F, P);
+  }
+  fz_done(f);
+  fz_done(fl);
+}
+
+static void fuzz_jkr_geometry(void)
+{
+  fz_fn *f = fz_new("dc_jkr_geometry");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R1 = U() < 0.5 ? fz_log(1e-7, 1e-2) : fz_pos();
+    const double r = U();
+    double R2 = R1 * (r < 0.4 ? fz_log(DC_JKR_RATIO_MIN, 1.0) : r < 0.6 ? 1.0 - fz_log(1e-17, 1e-3)
+                      : r < 0.7 ? 1.0 : PICK(DC_JKR_RATIO_MIN, 0.5, 1e-7));
+    if (U() < 0.1) R2 = fz_pos();
+    const double E = A(U() < 0.5 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(jkr_w(R1, E));
+    const double a1 = A(R1), a2 = A(R2);
+    const int bad = !ALLFIN(a1, a2, E, w);
+    const int dom = !bad && a1 > 0.0 && a2 > 0.0 && fmin(a1, a2) / fmax(a1, a2) >= DC_JKR_RATIO_MIN && E > 0.0 && w >= 0.0;
+    dc_jkr_geom g;
+    SENTINEL(g);
+    const int st = dc_jkr_geometry(a1, a2, E, w, &g);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(g), jkr_geom_ok(&g), "R1 %.17g R2 %.17g Estar %.17g w %.17g", a1, a2, E, w);
+    if (st == DC_OK && jkr_geom_ok(&g)) pool_jkr(&g);
+  }
+  fz_done(f);
+}
+
+static void fuzz_jkr_contact(void)
+{
+  fz_fn *fe = fz_new("dc_jkr_at_eccentricity");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_jkr_geom *g = &jpool[UI(nj)];
+    const double r = U();
+    double e2 = r < 0.4 ? g->e2_hertz * U() : r < 0.6 ? g->e2_hertz * fz_log(1e-30, 1.0)
+                : r < 0.8 ? g->e2_hertz * (1.0 - fz_log(1e-17, 1.0)) : PICK(0.0, g->e2_hertz, g->e2_break, g->e2_pull, 1e-17);
+    e2 = A(e2);
+    const int dom = !g->circular && g->w > 0.0 && e2 > 0.0 && e2 < g->e2_hertz;
+    dc_jkr_state s;
+    SENTINEL(s);
+    FZ_CHECK(fe, dc_jkr_at_eccentricity(g, e2, &s), !isfinite(e2), dom, UNTOUCHED(s), jkr_state_ok(&s),
+             "R_major %.17g R_minor %.17g Estar %.17g w %.17g e2 %.17g (e2_hertz %.17g): " JS_FMT, g->R_major,
+             g->R_minor, g->Estar, g->w, e2, g->e2_hertz, JS_ARGS(s));
+  }
+  fz_done(fe);
+  fz_fn *f = fz_new("dc_jkr_contact");
+  fz_fn *fi = fz_new("dc_jkr_in_contact");
+  fz_fn *fn = fz_new("dc_jkr_normal");
+  fi->seconds = fn->seconds = 0.0;
+  dc_jkr_hint warm = {0, 0, 0};
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_jkr_geom *g = &jpool[UI(nj)];
+    const double sc = g->delta_scale > 0.0 ? g->delta_scale : g->R_minor;
+    const double r = U();
+    double d = r < 0.5 ? sc * fz_sign(fz_log(1e-20, 1e20)) : r < 0.7 ? g->delta_break * PICK(1.0, 0.5, 2.0, -1.0)
+               : r < 0.8 ? PICK(0.0, -0.0, g->delta_pull) : fz_wide();
+    d = A(d);
+    /* hint: none, zero, the last call's, or any content (documented safe) */
+    dc_jkr_hint h = warm, *hp = &h;
+    const double rh = U();
+    if (rh < 0.25) hp = NULL;
+    else if (rh < 0.4) h.v = h.L = h.dudL = 0.0;
+    else if (rh < 0.6) { h.v = fz_wild(); h.L = fz_wild(); h.dudL = fz_wild(); }
+    else if (rh < 0.7) { h.v = U(); h.L = 60.0 * U() - 30.0; h.dudL = U() < 0.5 ? fz_wide() : 2.0 * U(); }
+    const dc_jkr_hint h0 = h;
+    struct { dc_jkr_state s; dc_jkr_hint h; } out;
+    SENTINEL(out.s);
+    const int st = dc_jkr_contact(g, d, hp, &out.s);
+    out.h = h;
+    const int hint_same = memcmp(&h, &h0, sizeof h) == 0;
+    FZ_CHECK(f, st, !isfinite(d), isfinite(d), UNTOUCHED(out.s) && hint_same, jkr_state_ok(&out.s),
+             "R_major %.17g R_minor %.17g Estar %.17g w %.17g delta %.17g hint %s (%.17g, %.17g, %.17g): " JS_FMT,
+             g->R_major, g->R_minor, g->Estar, g->w, d, hp ? "yes" : "NULL", h0.v, h0.L, h0.dudL, JS_ARGS(out.s));
+    if (st == DC_OK && hp) warm = h;
+    {
+      /* the contract output of the state (or, after a failure, of any state):
+         a copy, friction load F + 2 F_pulloff while in contact */
+      fn->seconds -= fz_now();
+      dc_jkr_state js = out.s;
+      double Fp = -g->F_pull;
+      if (st != DC_OK) {
+        js = (dc_jkr_state){UI(2), fz_wild(), fz_wild(), fz_wild(), fz_wild(), fz_wild(), fz_wild(), fz_wild()};
+        Fp = fz_wild();
+      }
+      dc_contact c;
+      SENTINEL(c);
+      dc_jkr_normal(&js, Fp, &c);
+      fn->calls++;
+      const double Fb = js.contact ? js.F + 2.0 * Fp : 0.0;
+      FZ_EXPECT(fn, !memcmp(&c.F, &js.F, sizeof c.F) && !memcmp(&c.kn, &js.kn, sizeof c.kn) &&
+                    !memcmp(&c.area, &js.area, sizeof c.area) && !memcmp(&c.a, &js.a, sizeof c.a) &&
+                    !memcmp(&c.b, &js.b, sizeof c.b) && c.formed == js.contact && !memcmp(&c.F_bound, &Fb, sizeof Fb) &&
+                    (st != DC_OK || !isfinite(Fb) || contact_ok(&c)),
+                "not the state's contract output", "delta %.17g F_pulloff %.17g", d, Fp);
+      fn->seconds += fz_now();
+    }
+    fi->seconds -= fz_now();
+    const int c = dc_jkr_in_contact(g, UI(2), d);
+    fi->calls++;
+    FZ_EXPECT(fi, c == 0 || c == 1, "not 0 or 1", "delta %.17g", d);
+    fi->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_rough_adhesive.h                                                */
+
+static void fuzz_gw_rough_adhesive(void)
+{
+  fz_fn *f = fz_new("dc_gw_rough_adhesive");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_jkr_geom *g = &jpool[UI(nj)];
+    const double n = A(U() < 0.5 ? fz_log(1e-2, 1e6) : fz_pos());
+    const double Db = fabs(g->delta_break) > 0.0 ? fabs(g->delta_break) : g->R_minor * 1e-6;
+    const double sg = A(U() < 0.6 ? Db * fz_log(1e-3, 1e3) : U() < 0.3 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.6 ? sg * (-12.0 + 30.0 * U()) : U() < 0.3 ? Db * (-3.0 + 6.0 * U()) : fz_wide());
+    const int br = AI(UI(2));
+    const int bad = !ALLFIN(n, sg, d);
+    dc_gw_adhesive_state s;
+    SENTINEL(s);
+    const int st = dc_gw_rough_adhesive(g, n, sg, d, br, &s);
+    FZ_CHECK(f, st, bad, !bad && n > 0.0 && sg >= 0.0 && (br == 0 || br == 1), UNTOUCHED(s),
+             ALLFIN(s.F, s.area, s.kn, s.h, s.err) && s.n_eval >= 0,
+             "R_major %.17g R_minor %.17g Estar %.17g w %.17g n_asp %.17g sigma %.17g delta %.17g branch %d",
+             g->R_major, g->R_minor, g->Estar, g->w, n, sg, d, br);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* dissipation_adhesive.h                                             */
+
+static void fuzz_dissipation(void)
+{
+  fz_fn *f = fz_new("dc_dissip_adhesive_ab");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double Am = A(U() < 0.4 ? fz_log(1e-9, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
+    const double E = A(U() < 0.4 ? fz_log(1e5, 1e12) : fz_pos());
+    const double a = A(U() < 0.4 ? fz_log(1e-9, 1e-3) : fz_pos());
+    const double b = A(U() < 0.2 ? a : a * (U() < 0.5 ? U() : fz_log(1e-300, 1.0)));
+    const double dd = A(U() < 0.5 ? fz_sign(fz_log(1e-6, 10.0)) : fz_wide());
+    const int bad = !ALLFIN(Am, E, a, b, dd);
+    double F;
+    SENTINEL(F);
+    FZ_CHECK(f, dc_dissip_adhesive_ab(Am, E, a, b, dd, &F), bad, !bad && Am >= 0.0 && E > 0.0 && b > 0.0 && b <= a,
+             UNTOUCHED(F), isfinite(F), "A %.17g Estar %.17g a %.17g b %.17g ddelta %.17g", Am, E, a, b, dd);
+  }
+  fz_done(f);
+  f = fz_new("dc_dissip_adhesive_state");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double Am = A(U() < 0.4 ? fz_log(1e-9, 1e-3) : fz_pos());
+    const double E = A(U() < 0.4 ? fz_log(1e5, 1e12) : fz_pos());
+    const double dd = A(U() < 0.5 ? fz_sign(fz_log(1e-6, 10.0)) : fz_wide());
+    dc_jkr_state s;
+    memset(&s, 0, sizeof s);
+    if (U() < 0.5 && nj > 0) {
+      const dc_jkr_geom *g = &jpool[UI(nj)];
+      dc_jkr_contact(g, (g->delta_scale > 0.0 ? g->delta_scale : g->R_minor) * (-2.0 + 10.0 * U()), NULL, &s);
+    } else {
+      s.contact = U() < 0.8 ? 1 : UI(3) - 1;
+      s.a = A(U() < 0.5 ? fz_log(1e-9, 1e-3) : fz_pos());
+      s.b = A(U() < 0.3 ? s.a : s.a * U());
+    }
+    const int bad = !ALLFIN(Am, E, dd) || (s.contact && !ALLFIN(s.a, s.b));
+    double F;
+    SENTINEL(F);
+    FZ_CHECK(f, dc_dissip_adhesive_state(Am, E, &s, dd, &F), bad,
+             !bad && Am >= 0.0 && E > 0.0 && (!s.contact || (s.a > 0.0 && s.b > 0.0 && s.b <= s.a)), UNTOUCHED(F),
+             isfinite(F), "A %.17g Estar %.17g contact %d a %.17g b %.17g ddelta %.17g", Am, E, s.contact, s.a, s.b, dd);
+  }
+  fz_done(f);
+  f = fz_new("dc_dissip_adhesive_radius_rate");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double Am = A(U() < 0.4 ? fz_log(1e-9, 1e-3) : fz_pos());
+    const double R = A(U() < 0.4 ? fz_log(1e-7, 1e-2) : fz_pos());
+    const double E = A(U() < 0.4 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(U() < 0.2 ? 0.0 : U() < 0.5 ? fz_log(1e-3, 1.0) : fz_pos());
+    const double a = A(U() < 0.4 ? R * fz_log(1e-6, 1.0) : fz_pos());
+    const double da = A(U() < 0.5 ? fz_sign(fz_log(1e-6, 10.0)) : fz_wide());
+    const int bad = !ALLFIN(Am, R, E, w, a, da);
+    double F;
+    SENTINEL(F);
+    FZ_CHECK(f, dc_dissip_adhesive_radius_rate(Am, R, E, w, a, da, &F), bad,
+             !bad && Am >= 0.0 && R > 0.0 && E > 0.0 && w >= 0.0 && a > 0.0, UNTOUCHED(F), isfinite(F),
+             "A %.17g R %.17g Estar %.17g w %.17g a %.17g da/dt %.17g", Am, R, E, w, a, da);
+  }
+  fz_done(f);
+  f = fz_new("dc_jkr_sphere_viscoelastic");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R = A(U() < 0.5 ? fz_log(1e-7, 1e-2) : fz_pos());
+    const double E = A(U() < 0.5 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(jkr_w(R, E));
+    const double Am = A(U() < 0.5 ? fz_log(1e-9, 1e-3) : U() < 0.2 ? 0.0 : fz_pos());
+    const double db = dc_jkr_sphere_delta_break(fabs(R), fabs(E), fabs(w));
+    const double d = A(U() < 0.6 && isfinite(db) && db < 0.0 ? db * (-20.0 + 22.0 * U()) : fz_wide());
+    const double dd = A(U() < 0.5 ? fz_sign(fz_log(1e-6, 10.0)) : fz_wide());
+    const int bad = !ALLFIN(R, E, w, Am, d, dd);
+    struct { dc_jkr_state s; double F; } out;
+    SENTINEL(out);
+    const int st = dc_jkr_sphere_viscoelastic(R, E, w, Am, d, dd, &out.s, &out.F);
+    FZ_CHECK(f, st, bad, !bad && R > 0.0 && E > 0.0 && w >= 0.0 && Am >= 0.0, UNTOUCHED(out),
+             jkr_state_ok(&out.s) && isfinite(out.F),
+             "R %.17g Estar %.17g w %.17g A %.17g delta %.17g ddelta %.17g", R, E, w, Am, d, dd);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* contract.h                                                         */
+
+/* dc_param_check and dc_jkr_check fill their dc_param_error on DC_EDOM:
+   that report is their documented output for the error (contract.h), an
+   exception to status.h's "outputs untouched" that these checks allow and
+   verify instead. */
+static void fuzz_param_check(void)
+{
+  fz_fn *f = fz_new("dc_param_check");
+  static const char *names[2] = {"youngsModulus", "x"}, *ranges[2] = {"(0, inf)", "[a, b]"};
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double lo = U() < 0.5 ? PICK(0.0, -1.0, 1.0, -INFINITY, -0.0) : fz_wide();
+    double hi = U() < 0.5 ? PICK(1.0, 0.5, 50.0, INFINITY) : fz_wide();
+    if (lo > hi) { const double t = lo; lo = hi; hi = t; }
+    if (U() < 0.05) lo = NAN;
+    const int lo_open = UI(2), hi_open = UI(2);
+    const double v = A(U() < 0.3 ? PICK(lo, hi) : isfinite(lo) && isfinite(hi) ? lo + (hi - lo) * U() : fz_wide());
+    const char *nm = names[UI(2)], *rg = ranges[UI(2)];
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_param_check(nm, v, lo, lo_open, hi, hi_open, rg, &err);
+    const int inside = isfinite(v) && (lo_open ? v > lo : v >= lo) && (hi_open ? v < hi : v <= hi);
+    FZ_CHECK(f, st, !isfinite(v), inside, 1, 1, "value %.17g lo %.17g (%d) hi %.17g (%d)", v, lo, lo_open, hi, hi_open);
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) &&
+                 (st == DC_OK ? UNTOUCHED(err) : err.name == nm && err.range == rg && memcmp(&err.value, &v, sizeof v) == 0),
+              "wrong status or error report", "value %.17g lo %.17g (%d) hi %.17g (%d): status %d", v, lo, lo_open, hi,
+              hi_open, st);
+  }
+  fz_done(f);
+  f = fz_new("dc_param_error_format");
+  for (long k = 0; k < N_CALLS; k++) {
+    dc_param_error err = {names[UI(2)], fz_wild(), ranges[UI(2)]};
+    char buf[96];
+    const size_t n = (size_t)UI(80);
+    memset(buf, 0x5A, sizeof buf);
+    dc_param_error_format(&err, UI(20) - 1, UI(20) - 1, buf, n);
+    f->calls++;
+    int ok = 1;
+    for (size_t i = n; i < sizeof buf; i++) ok &= buf[i] == 0x5A;
+    if (n > 0) ok &= memchr(buf, 0, n) != NULL;
+    FZ_EXPECT(f, ok, "wrote past n or no terminating NUL", "n %zu value %.17g", n, err.value);
+  }
+  fz_done(f);
+}
+
+static void fuzz_patch(void)
+{
+  fz_fn *f = fz_new("dc_patch_circular");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R = A(U() < 0.4 ? fz_log(1e-6, 1.0) : fz_pos());
+    const double d = A(U() < 0.4 ? R * fz_sign(fz_log(1e-12, 1.0)) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const double F = A(U() < 0.5 ? fz_sign(fz_log(1e-12, 1e6)) : fz_wide());
+    dc_patch p;
+    SENTINEL(p);
+    dc_patch_circular(R, d, F, &p);
+    f->calls++;
+    if (!(ALLFIN(R, d, F) && R > 0.0)) continue;
+    FZ_EXPECT(f, FIN(p) && p.a == p.b && p.a >= 0.0 && (p.a > 0.0) == (d > 0.0) && p.F_elastic == F &&
+                 p.F_bound == fmax(F, 0.0) && p.formed == (d > 0.0) && p.axis[0] == 0.0 && p.axis[1] == 0.0 &&
+                 p.axis[2] == 0.0,
+              "not the finite circular patch", "R %.17g delta %.17g F %.17g: a %.17g", R, d, F, p.a);
+  }
+  fz_done(f);
+  f = fz_new("dc_patch_from_contact");
+  for (long k = 0; k < N_CALLS; k++) {
+    dc_contact c = {fz_wild(), fz_wild(), fz_wild(), fz_wild(), fz_wild(), fz_wild(), UI(2)};
+    double axis[3] = {fz_wild(), fz_wild(), fz_wild()};
+    const int null = UI(2);
+    dc_patch p;
+    SENTINEL(p);
+    dc_patch_from_contact(&c, null ? NULL : axis, &p);
+    f->calls++;
+    const double ax[3] = {null ? 0.0 : axis[0], null ? 0.0 : axis[1], null ? 0.0 : axis[2]};
+    FZ_EXPECT(f, !memcmp(&p.a, &c.a, sizeof p.a) && !memcmp(&p.b, &c.b, sizeof p.b) &&
+                 !memcmp(&p.F_elastic, &c.F, sizeof c.F) && !memcmp(&p.F_bound, &c.F_bound, sizeof c.F_bound) &&
+                 !memcmp(p.axis, ax, sizeof ax) && p.formed == (c.formed ? 1.0 : 0.0),
+              "not a copy of the contact", "call %ld", k);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* damping.h                                                          */
+
+static void fuzz_damping(void)
+{
+  fz_fn *f = fz_new("dc_damping_beta");
+  fz_fn *fr = fz_new("dc_damping_restitution");
+  fr->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double e = A(U() < 0.6 ? U() : U() < 0.5 ? fz_log(1e-320, 1.0) : PICK(0.0, 1.0, DBL_TRUE_MIN, 1.0 + DBL_EPSILON));
+    double b;
+    SENTINEL(b);
+    const int st = dc_damping_beta(e, &b);
+    FZ_CHECK(f, st, !isfinite(e), e > 0.0 && e <= 1.0, UNTOUCHED(b), isfinite(b) && b <= 0.0 && b > -1.0,
+             "e %.17g", e);
+    if (st != DC_OK) dc_damping_beta(U() < 0.5 ? 1.0 - U() : fz_log(1e-300, 1.0), &b);
+    /* the inline damping coefficient: finite and >= 0 where S m is */
+    fr->seconds -= fz_now();
+    const double S = U() < 0.5 ? fz_log(1e-3, 1e9) : fz_log(1e-300, 1e300), m = U() < 0.5 ? fz_log(1e-12, 1.0) : fz_log(1e-300, 1e300);
+    const double g = dc_damping_restitution(b, S, m);
+    fr->calls++;
+    if (isfinite(S * m)) FZ_EXPECT(fr, isfinite(g) && g >= 0.0, "not finite and >= 0", "beta %.17g S %.17g m %.17g: %.17g", b, S, m, g);
+    fr->seconds += fz_now();
+  }
+  fz_done(f);
+  f = fz_new("dc_damping_viscoelastic");
+  fz_fn *fc = fz_new("dc_punch_stiffness_circle");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double x = fz_wide(), y = fz_wide();
+    const double g = dc_damping_viscoelastic(x, y), c = dc_punch_stiffness_circle(x, y);
+    f->calls++;
+    fc->calls++;
+    FZ_EXPECT(f, !memcmp(&g, &(double){x * y}, sizeof g), "not A S", "%.17g %.17g", x, y);
+    FZ_EXPECT(fc, !memcmp(&c, &(double){2.0 * x * y}, sizeof c), "not 2 E* a", "%.17g %.17g", x, y);
+  }
+  fz_done(f);
+  fz_done(fc);
+  f = fz_new("dc_punch_stiffness");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double E = A(U() < 0.4 ? fz_log(1e5, 1e12) : fz_pos());
+    const double a = A(U() < 0.4 ? fz_log(1e-9, 1e-3) : fz_pos());
+    const double b = A(U() < 0.2 ? a : a * (U() < 0.5 ? U() : fz_log(1e-320, 1.0)));
+    const int bad = !ALLFIN(E, a, b);
+    double kp;
+    SENTINEL(kp);
+    const int st = dc_punch_stiffness(E, a, b, &kp);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && b > 0.0 && a >= b, UNTOUCHED(kp), isfinite(kp) && kp >= 0.0,
+             "Estar %.17g a %.17g b %.17g", E, a, b);
+    /* k <= 2 E* a */
+    FZ_EXPECT(f, st != DC_ERANGE || lg(2.0) + lg(E) + lg(a) > LOG_MAX - 1.0, "DC_ERANGE for a representable stiffness",
+              "Estar %.17g a %.17g b %.17g", E, a, b);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* mindlin.h                                                          */
+
+static void fuzz_mindlin(void)
+{
+  fz_fn *f = fz_new("dc_mindlin_pair_init");
+  fz_fn *fs = fz_new("dc_mindlin_stiffness");
+  fz_fn *fk = fz_new("dc_mindlin_kt_circle");
+  fs->seconds = fk->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double v[4];
+    for (int i = 0; i < 2; i++) {
+      v[2 * i] = A(U() < 0.5 ? fz_log(1e5, 1e12) : fz_pos());
+      v[2 * i + 1] = A(U() < 0.7 ? -1.0 + 1.5 * U() : PICK(-1.0, 0.5, 0.0, -0.0, 0.6));
+    }
+    const int bad = !fin(v, 4);
+    dc_mindlin_pair p;
+    SENTINEL(p);
+    const int st = dc_mindlin_pair_init(v[0], v[1], v[2], v[3], &p);
+    FZ_CHECK(f, st, bad, !bad && v[0] > 0.0 && v[2] > 0.0 && v[1] > -1.0 && v[1] <= 0.5 && v[3] > -1.0 && v[3] <= 0.5,
+             UNTOUCHED(p), FIN(p) && p.s0 > 0.0, "E1 %.17g nu1 %.17g E2 %.17g nu2 %.17g", v[0], v[1], v[2], v[3]);
+    /* the stiffnesses on this pair (or on raw values), K and D of an ellipse */
+    fs->seconds -= fz_now();
+    fz_call();
+    if (st != DC_OK || U() < 0.1) { p.s0 = A(fz_pos()); p.s1 = A(fz_wide()); }
+    dc_ellint el;
+    dc_ellint_m1(U() < 0.5 ? U() : fz_log(1e-300, 1.0), &el);
+    const double a = A(U() < 0.5 ? fz_log(1e-9, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
+    const double K = A(el.K), D = A(el.D);
+    const int bs = !ALLFIN(a, K, D, p.s0, p.s1);
+    double km[2];
+    SENTINEL(km);
+    const int ss = dc_mindlin_stiffness(&p, a, K, D, &km[0], &km[1]);
+    FZ_CHECK(fs, ss, bs, !bs && a >= 0.0 && K > 0.0 && D > 0.0 && p.s0 > 0.0, UNTOUCHED(km), FIN(km),
+             "s0 %.17g s1 %.17g a %.17g K %.17g D %.17g", p.s0, p.s1, a, K, D);
+    fs->seconds += fz_now();
+    fk->seconds -= fz_now();
+    const double G = fz_wide(), r = fz_wide(), kt = dc_mindlin_kt_circle(G, r);
+    fk->calls++;
+    FZ_EXPECT(fk, !memcmp(&kt, &(double){8.0 * G * r}, sizeof kt), "not 8 G* a", "%.17g %.17g", G, r);
+    fk->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* root_find.h                                                        */
+
+typedef struct {
+  int kind;
+  double c;
+  double x_at[3];   /* the point evaluated into each slot */
+  int bad_slot;
+} root_ctx;
+
+static double root_f(double x, void *vp, int slot)
+{
+  root_ctx *q = vp;
+  if (slot < 0 || slot > 2) q->bad_slot = 1;
+  else q->x_at[slot] = x;
+  const double t = x - q->c;
+  switch (q->kind) {
+  case 0: return t;
+  case 1: return t * t * t;
+  case 2: return t < 0.0 ? -1.0 : 1.0;                          /* a step */
+  case 3: return cos(x) - x;
+  case 4: return fabs(t) < 0.25 * fabs(q->c) + 1e-300 ? NAN : t;   /* fails near the root */
+  case 5: return t == 0.0 ? 0.0 : 1.0 / t;                      /* a pole, no root */
+  default: return t > 0.0 ? INFINITY : -1.0;
+  }
+}
+
+static void fuzz_root_find(void)
+{
+  fz_fn *f = fz_new("dc_root_brent");
+  fz_fn *fe = fz_new("dc_root_brent_ends");
+  fe->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    root_ctx q = {UI(7), U() < 0.5 ? 2.0 * U() - 1.0 : fz_wide(), {0, 0, 0}, 0};
+    if (q.kind == 3) q.c = 0.0;
+    const double w = U() < 0.5 ? fz_log(1e-12, 10.0) : fz_log(1e-300, 1e300);
+    double a = A(q.c - w * U()), b = A(q.c + w * U());
+    if (U() < 0.5) { const double t = a; a = b; b = t; }
+    const double rtol = A(U() < 0.5 ? PICK(0.0, 1e-15, 1e-12, 1e-8) : fz_log(1e-20, 1.0));
+    const double atol = A(U() < 0.5 ? PICK(0.0, 1e-300, 1e-12) : fz_log(1e-320, 1.0));
+    const int mi = U() < 0.9 ? 1 + UI(120) : (int[]){0, -1, INT_MIN}[UI(3)];
+    root_ctx q0 = q;
+    const double fa = root_f(a, &q0, 0), fb = root_f(b, &q0, 1);
+    const int bad = !ALLFIN(a, b, rtol, atol);
+    const int dom = !bad && ALLFIN(fa, fb) && ((fa <= 0.0 && fb >= 0.0) || (fa >= 0.0 && fb <= 0.0)) && rtol >= 0.0 &&
+                    atol >= 0.0 && mi >= 1;
+    dc_root_result r;
+    SENTINEL(r);
+    const int st = dc_root_brent(root_f, &q, a, b, rtol, atol, mi, &r);
+    int ok = isfinite(r.x) && isfinite(r.fx) && r.slot >= 0 && r.slot <= 2 && r.evaluations >= 0 &&
+             r.evaluations <= mi + 2 && r.x >= fmin(a, b) && r.x <= fmax(a, b) && !q.bad_slot;
+    if (ok) ok = q.x_at[r.slot] == r.x && (st != DC_OK || r.fx == root_f(r.x, &q0, 0));
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(r), ok, "kind %d c %.17g a %.17g b %.17g rtol %.17g atol %.17g max_iter %d", q.kind,
+             q.c, a, b, rtol, atol, mi);
+    /* with the end values given (any, also non-finite) */
+    fe->seconds -= fz_now();
+    fz_call();
+    q.bad_slot = 0;
+    q.x_at[0] = a;
+    q.x_at[1] = b;
+    const double ga = A(fa), gb = A(fb);
+    const int bad2 = !ALLFIN(a, b, ga, gb, rtol, atol);
+    const int dom2 = !bad2 && ((ga <= 0.0 && gb >= 0.0) || (ga >= 0.0 && gb <= 0.0)) && rtol >= 0.0 && atol >= 0.0 &&
+                     mi >= 1;
+    SENTINEL(r);
+    const int st2 = dc_root_brent_ends(root_f, &q, a, b, ga, gb, rtol, atol, mi, &r);
+    ok = isfinite(r.x) && isfinite(r.fx) && r.slot >= 0 && r.slot <= 2 && r.evaluations >= 0 && r.evaluations <= mi &&
+         r.x >= fmin(a, b) && r.x <= fmax(a, b) && !q.bad_slot;
+    if (ok) ok = q.x_at[r.slot] == r.x;
+    FZ_CHECK(fe, st2, bad2, dom2, UNTOUCHED(r), ok,
+             "kind %d c %.17g a %.17g b %.17g fa %.17g fb %.17g rtol %.17g atol %.17g max_iter %d", q.kind, q.c, a, b,
+             ga, gb, rtol, atol, mi);
+    fe->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* The reported cases, by name (the sweeps above find them too).     */
+
+static void known_cases(void)
+{
+  /* Rc = R1 R2/(R1 + R2) overflowed to inf with DC_OK */
+  dc_hertz_geom g;
+  CHECK(dc_hertz_geometry(2.3e268, 4.5e256, &g) == DC_OK && FIN(g));
+  CHECK_REL(g.Rc, 4.5e256 / (1.0 + 4.5e256 / 2.3e268), 4e-16, "Rc(2.3e268, 4.5e256)");
+  /* a subnormal sigma gave NaN with DC_OK */
+  dc_feng_law law;
+  dc_feng_init(4.0, DC_FENG_TABLE, &law);
+  double P[2];
+  for (int e = 1030; e <= 1074; e += 4)
+    for (int k = -2; k <= 2; k++) {
+      CHECK(dc_feng_force(&law, 1e9, 1e-3, ldexp(1.0, -e), k * ldexp(1.0, -e), &P[0], &P[1]) == DC_OK && FIN(P));
+    }
+  /* a non-finite Hessian was accepted */
+  const double grad[3] = {0.0, 0.0, 1.0}, u[3] = {1.0, 0.0, 0.0}, v[3] = {0.0, 1.0, 0.0};
+  for (int i = 0; i < 9; i++) {
+    double hess[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, form[3];
+    hess[i] = i % 2 ? NAN : INFINITY;
+    SENTINEL(form);
+    CHECK(dc_curvature_form(grad, hess, u, v, form) == DC_EDOM && UNTOUCHED(form));
+  }
+  /* E* = inf was accepted */
+  dc_hertz_state hs;
+  dc_hertz_geometry(1e-3, 2e-4, &g);
+  SENTINEL(hs);
+  CHECK(dc_hertz_contact(&g, INFINITY, 1e-6, &hs) == DC_EDOM && UNTOUCHED(hs));
+  /* jkr_elliptic (owned elsewhere, checked here): NaN for e^2 <= 1e-17, and
+     dc_jkr_sphere_viscoelastic wrote its outputs before failing */
+  dc_jkr_geom jg;
+  CHECK(dc_jkr_geometry(1e-3, 2e-4, 1e9, 0.05, &jg) == DC_OK);
+  for (double e2 = 1e-30; e2 <= 1e-15; e2 *= 10.0) {
+    dc_jkr_state s;
+    SENTINEL(s);
+    const int st = dc_jkr_at_eccentricity(&jg, e2, &s);
+    if (!CHECK(st == DC_OK ? jkr_state_ok(&s) : st != DC_EDOM && UNTOUCHED(s)))
+      printf("  dc_jkr_at_eccentricity(R 1e-3/2e-4, E* 1e9, w 0.05, e2 = %g): status %d, F %g\n", e2, st, s.F);
+  }
+  struct { dc_jkr_state s; double F; } out;
+  SENTINEL(out);
+  CHECK(dc_jkr_sphere_viscoelastic(1e-3, 1e9, 0.05, -1.0, 1e-7, 0.1, &out.s, &out.F) == DC_EDOM && UNTOUCHED(out));
+  SENTINEL(out);
+  CHECK(dc_jkr_sphere_viscoelastic(1e-3, 1e9, 0.05, 1e-6, 1e-7, NAN, &out.s, &out.F) == DC_EDOM && UNTOUCHED(out));
+}
+
+/* ---------------------------------------------------------------- */
+
+int main(void)
+{
+  clock_gettime(CLOCK_MONOTONIC, &fz_t0);
+  memset(fz_ff, 0xFF, sizeof fz_ff);
+  /* constructor pools start with ordinary members */
+  dc_hertz_geom g;
+  dc_hertz_geometry(1e-3, 1e-3, &g); pool_hertz(&g);
+  dc_hertz_geometry(1e-3, 2e-4, &g); pool_hertz(&g);
+  dc_feng_law law;
+  dc_feng_init(4.0, DC_FENG_TABLE, &law); lpool[nl++] = law;
+  dc_jkr_geom jg;
+  dc_jkr_geometry(1e-3, 1e-3, 1e9, 0.05, &jg); pool_jkr(&jg);
+  dc_jkr_geometry(1e-3, 2e-4, 1e9, 0.05, &jg); pool_jkr(&jg);
+
+  known_cases();
+  fuzz_status_str();
+  fuzz_ellint();
+  fuzz_tangent_basis();
+  fuzz_curvature_form();
+  fuzz_form_principal();
+  fuzz_relative_radii();
+  fuzz_form_major_axis();
+  fuzz_hertz_eccentricity();
+  fuzz_hertz_geometry();
+  fuzz_hertz_contact();
+  fuzz_hertz_normal();
+  fuzz_gw_integrals();
+  fuzz_gw_rough();
+  fuzz_feng_init();
+  fuzz_feng_force();
+  fuzz_gw_solver();
+  fuzz_gw_solve();
+  fuzz_rough_tangential();
+  fuzz_jkr_sphere();
+  fuzz_jkr_geometry();
+  fuzz_jkr_contact();
+  fuzz_gw_rough_adhesive();
+  fuzz_dissipation();
+  fuzz_jkr_check();
+  fuzz_param_check();
+  fuzz_patch();
+  fuzz_damping();
+  fuzz_mindlin();
+  fuzz_root_find();
+
+  printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",
+         "seconds");
+  for (int i = 0; i < fz_n; i++) {
+    const fz_fn *f = &fz_all[i];
+    printf("%-32s %9ld %9ld %8ld %8ld %8ld %6ld %8.3f\n", f->name, f->calls, f->st[0], f->st[1], f->st[2], f->st[3],
+           f->fails, f->seconds);
+    for (int j = 0; j < 8 && f->why[j]; j++) printf("    %ld x %s\n", f->nwhy[j], f->why[j]);
+  }
+  printf("total %.2f s\n", fz_now());
+  return check_summary("fuzz");
+}
