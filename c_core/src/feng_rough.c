@@ -247,3 +247,8 @@ int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
   *kn = knv;
   return DC_OK;
 }
+
+int dc_feng_check(double mu, dc_param_error *err)
+{
+  return dc_param_check("roughnessMu", mu, DC_FENG_MU_MIN, 0, DC_FENG_MU_MAX, 0, "[1, 50]", err);
+}

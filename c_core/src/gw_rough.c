@@ -87,3 +87,8 @@ int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, doubl
   c->formed = F > 0.0;
   return DC_OK;
 }
+
+int dc_gw_rough_check(double n_asp, dc_param_error *err)
+{
+  return dc_param_check("asperityCount", n_asp, 0.0, 1, HUGE_VAL, 1, "(0, inf)", err);
+}

@@ -86,7 +86,7 @@ public:
       registry.connect("asperityCount", n_asp, caller);
       for (int i = 1; i <= ntypes; i++)
         for (int j = 1; j <= ntypes; j++)
-          if (dc_param_check("asperityCount", n_asp[i][j], 0.0, 1, HUGE_VAL, 1, "(0, inf)", &err))
+          if (dc_gw_rough_check(n_asp[i][j], &err))
             stopParam(err, i, j);
       return;
     }
@@ -96,7 +96,7 @@ public:
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
         dc_feng_law law;
-        if (dc_param_check("roughnessMu", mu[i][j], DC_FENG_MU_MIN, 0, DC_FENG_MU_MAX, 0, "[1, 50]", &err))
+        if (dc_feng_check(mu[i][j], &err))
           stopParam(err, i, j);
         dc_feng_init(mu[i][j], fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, &law);
         /* sigma = 0 pairs take the Hertz branch and never read theirs */

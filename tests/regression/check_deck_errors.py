@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Bad deck input ends the run with an error that names the cause (never a
 crash or a silent NaN): unknown model, missing material property, a setting
-outside its range, a missing property for an option, superquadrics without
-`surface superquadric`. Usage: check_deck_errors.py WORKDIR"""
+outside its range, a missing property for an option, a setting the model
+does not take, superquadrics without `surface superquadric`. Usage: check_deck_errors.py WORKDIR"""
 import os
 import sys
 
@@ -21,6 +21,7 @@ cases = [
     ("roughnessMu outside [1, 50]", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough_mu60")), "roughnessMu = 60 for types 1 and 1 is outside [1, 50]"),
     ("contact distance too small for the roughness", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough"), x0="0.00099"), "set neigh_modify contact_distance_factor >="),
     ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
+    ("limitForce on an adhesive model", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="limitForce on"), "Normal model jkr_elliptic: 'limitForce on' is not available"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
 ]
 for k, (name, deck, variables, message) in enumerate(cases):

@@ -46,6 +46,7 @@
 #define DC_FENG_ROUGH_H
 
 #include <math.h>
+#include "dc/contract.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -135,6 +136,9 @@ static inline void dc_feng_pair_force(const dc_feng_pair *p, double sqrtR, doubl
 /* The published tables (Tables 4-6), for tests: mu nodes and coefficients. */
 extern const double dc_feng_mu_nodes[7];
 extern const double dc_feng_table_I[4][7], dc_feng_table_II[3][7], dc_feng_table_III[5][7];
+
+/* Parameter check (dc/contract.h): roughnessMu mu in [1, 50]. */
+int dc_feng_check(double mu, dc_param_error *err);
 
 #ifdef __cplusplus
 }

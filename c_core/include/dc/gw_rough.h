@@ -67,6 +67,9 @@ static inline double dc_gw_roughness_combine(double sigma_i, double sigma_j)
    non-finite inputs or Estar <= 0 (c untouched). */
 int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, double F, double kn, dc_contact *c);
 
+/* Parameter check (dc/contract.h): asperityCount n_asp > 0 and finite. */
+int dc_gw_rough_check(double n_asp, dc_param_error *err);
+
 #ifdef __cplusplus
 }
 #endif
