@@ -11,11 +11,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, run, save_reference, table
+from regress import ROOT, compare_tables, run, save_reference, start, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
-c = Checks("adhesive_agglomerate")
+work, update, c = start()
 rows = {}
 for ranks in (1, 2):
     d = os.path.join(work, "ranks%d" % ranks)

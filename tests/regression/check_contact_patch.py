@@ -30,10 +30,9 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, ellipke, run
+from regress import ROOT, ellipke, run, start
 
-work = sys.argv[1]
-c = Checks("contact_patch")
+work, _, c = start()
 DIR = os.path.join(ROOT, "inputs", "contact_patch")
 Y, nu, w, dt, T, EVERY = 5e6, 0.3, 0.05, 1e-7, 2e-4, 20
 Estar = 1.0 / (2.0 * (1 - nu ** 2) / Y)

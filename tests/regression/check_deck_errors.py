@@ -7,10 +7,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, run
+from regress import ROOT, run, start
 
-work = sys.argv[1]
-c = Checks("deck_errors")
+work, _, c = start()
 props = lambda name: os.path.join(ROOT, "inputs", "deck_errors", name)
 ok = {"props": props("props_full"), "settings": "limitForce off"}
 cases = [

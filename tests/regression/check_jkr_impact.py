@@ -14,11 +14,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, run, save_reference, table
+from regress import ROOT, compare_tables, run, save_reference, start, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
-c = Checks("jkr_impact")
+work, update, c = start()
 r, rho, Y, nu, w = 1e-3, 2500.0, 5e6, 0.3, 0.05
 R = r / 2
 Estar = 1.0 / (2.0 * (1 - nu ** 2) / Y)

@@ -13,11 +13,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, run, save_reference, table
+from regress import ROOT, compare_tables, run, save_reference, start, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
-c = Checks("rough_impact")
+work, update, c = start()
 
 R, Y, nu, sig = 1e-3, 5e6, 0.3, 1e-5
 Estar = 1.0 / (2.0 * (1 - nu ** 2) / Y)

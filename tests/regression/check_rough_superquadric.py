@@ -19,11 +19,9 @@ import sys
 import mpmath as mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, elliptic_hertz, relative_radii, run, save_reference, subsample, table
+from regress import ROOT, compare_tables, elliptic_hertz, relative_radii, run, save_reference, start, subsample, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
-c = Checks("rough_superquadric")
+work, update, c = start()
 mp.mp.dps = 20
 EVERY = 10
 

@@ -16,12 +16,10 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, hertz_impact, impact, run, save_reference, subsample, table
+from regress import ROOT, compare_tables, hertz_impact, impact, run, save_reference, start, subsample, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
 ref_dir = os.path.join(ROOT, "inputs", "sphere_impact", "reference")
-c = Checks("sphere_impact")
+work, update, c = start()
 EVERY = 10
 
 runs = {}

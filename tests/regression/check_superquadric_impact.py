@@ -18,13 +18,11 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import (Checks, ROOT, compare_tables, elliptic_hertz, hertz_impact, impact, relative_radii, run,
-                     save_reference, subsample, table)
+from regress import (ROOT, compare_tables, elliptic_hertz, hertz_impact, impact, relative_radii, run,
+                     save_reference, start, subsample, table)
 
-work = sys.argv[1]
-update = "--update" in sys.argv
 ref_dir = os.path.join(ROOT, "inputs", "superquadric_impact", "reference")
-c = Checks("superquadric_impact")
+work, update, c = start()
 EVERY = 10
 
 

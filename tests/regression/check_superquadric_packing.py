@@ -13,12 +13,10 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, run, save_reference, table
+from regress import ROOT, compare_tables, run, save_reference, start, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
 ref = os.path.join(ROOT, "inputs", "superquadric_packing", "reference", "packing_hertz_elliptic_1rank.txt")
-c = Checks("superquadric_packing")
+work, update, c = start()
 final = {}
 for ranks in (1, 2):
     d = os.path.join(work, "ranks%d" % ranks)

@@ -21,11 +21,9 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import Checks, ROOT, compare_tables, ellipke, relative_radii, run, save_reference, subsample, table
+from regress import ROOT, compare_tables, ellipke, relative_radii, run, save_reference, start, subsample, table
 
-work = sys.argv[1]
-update = "--update" in sys.argv
-c = Checks("superquadric_pulloff")
+work, update, c = start()
 EVERY = 10
 
 Y, nu, w, omega, A = 5e6, 0.3, 0.5, 30.0, 1e-5

@@ -31,6 +31,16 @@ class Checks:
         sys.exit(1 if self.failed else 0)
 
 
+def start():
+    """The entry of every check_<case>.py WORKDIR [--update]: (the work
+    folder, whether to rewrite the committed references, the Checks of
+    <case>)."""
+    if len(sys.argv) < 2:
+        raise SystemExit("usage: %s WORKDIR [--update]" % sys.argv[0])
+    name = os.path.basename(sys.argv[0])[len("check_"):-len(".py")]
+    return sys.argv[1], "--update" in sys.argv, Checks(name)
+
+
 def run(deck, workdir, ranks=1, variables=None, tag="run", expect_error=False):
     """Runs `deck` (path under inputs/) in workdir; returns the log text.
     With expect_error, returns (exit code, screen output + log) instead of
