@@ -1019,25 +1019,39 @@ static void fuzz_jkr_sphere(void)
   fz_done(f);
 }
 
-static void fuzz_jkr_check(void)
+/* A law's parameter check (contract.h): DC_OK inside [lo, hi] (open ends
+   as flagged), else DC_EDOM with the error report filled, which is its
+   documented output for the error (see fuzz_param_check). */
+static void fuzz_law_check(const char *name, int (*check)(double, dc_param_error *), double lo, int lo_open,
+                           double hi, double typ_lo, double typ_hi)
 {
-  fz_fn *f = fz_new("dc_jkr_check");
-  fz_fn *fl = fz_new("dc_jkr_friction_load");
+  fz_fn *f = fz_new(name);
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
-    const double w = A(U() < 0.5 ? fz_log(1e-6, 1.0) : PICK(0.0, -0.0, -DBL_TRUE_MIN, DBL_MAX));
+    const double x = A(U() < 0.5 ? fz_log(typ_lo, typ_hi) : U() < 0.5 ? fz_wide() : PICK(lo, hi, 0.0, -0.0, DBL_MAX));
     dc_param_error err;
     SENTINEL(err);
-    const int st = dc_jkr_check(w, &err);
-    /* the error report is the documented DC_EDOM output (see fuzz_param_check) */
-    FZ_CHECK(f, st, !isfinite(w), isfinite(w) && w >= 0.0, 1, UNTOUCHED(err), "w %.17g", w);
-    FZ_EXPECT(f, st == DC_OK || (err.name && err.range && memcmp(&err.value, &w, sizeof w) == 0),
-              "no error report on DC_EDOM", "w %.17g", w);
+    const int st = check(x, &err);
+    const int inside = isfinite(x) && (lo_open ? x > lo : x >= lo) && x <= hi;
+    FZ_CHECK(f, st, !isfinite(x), inside, 1, UNTOUCHED(err), "value %.17g", x);
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) &&
+                 (st == DC_OK || (err.name && err.range && memcmp(&err.value, &x, sizeof x) == 0)),
+              "wrong status or no error report", "value %.17g: status %d", x, st);
+  }
+  fz_done(f);
+}
+
+static void fuzz_jkr_check(void)
+{
+  fuzz_law_check("dc_jkr_check", dc_jkr_check, 0.0, 0, DBL_MAX, 1e-6, 1.0);
+  fuzz_law_check("dc_feng_check", dc_feng_check, DC_FENG_MU_MIN, 0, DC_FENG_MU_MAX, 1.0, 50.0);
+  fuzz_law_check("dc_gw_rough_check", dc_gw_rough_check, 0.0, 1, DBL_MAX, 1e-2, 1e6);
+  fz_fn *fl = fz_new("dc_jkr_friction_load");
+  for (long k = 0; k < N_CALLS; k++) {
     const double F = fz_wide(), P = fz_wide(), L = dc_jkr_friction_load(F, P);
     fl->calls++;
     FZ_EXPECT(fl, !memcmp(&L, &(double){F + 2.0 * P}, sizeof L), "not F + 2 F_pulloff", "%.17g %.17g", F, P);
   }
-  fz_done(f);
   fz_done(fl);
 }
 
