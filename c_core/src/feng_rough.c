@@ -2,6 +2,7 @@
    variants, continuity treatment and seed notes in dc/feng_rough.h. */
 #include "dc/feng_rough.h"
 #include "dc/status.h"
+#include "scaled_product.h"
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -181,22 +182,6 @@ double dc_feng_pstar_sigma(const dc_feng_law *law, double ap)
   return P;
 }
 
-/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
-   mantissas multiplied, exponents summed, one scaling (rounded as the
-   plain product would be when that stays in range) */
-static double product(int n, const double *x)
-{
-  double m = 1.0;
-  int e = 0;
-  for (int i = 0; i < n; i++) {
-    int k;
-    m *= frexp(x[i], &k);
-    e += k;
-    m = frexp(m, &k);
-    e += k;
-  }
-  return ldexp(m, e);
-}
 
 /* Eq. 75 for finite inputs in the domain with sigma > 0, where the bound
    pair's constants or the kernel's products leave the range of doubles:
@@ -217,8 +202,8 @@ static void feng_force_scaled(const dc_feng_law *law, double Estar, double R, do
     L = sigma;
   }
   const double sR = sqrt(R), sL = sqrt(L);
-  *P = product(6, (const double[]){4.0 / 3.0, Estar, sR, L, sL, Pu});
-  *kn = product(5, (const double[]){4.0 / 3.0, Estar, sR, sL, knu});
+  *P = dc_scaled_product(6, (const double[]){4.0 / 3.0, Estar, sR, L, sL, Pu});
+  *kn = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sR, sL, knu});
 }
 
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
@@ -233,8 +218,8 @@ int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
     Pv = c * fmax(delta, 0.0) * sd;
     knv = 1.5 * c * sd;
     if (!(isfinite(Pv) && isfinite(knv))) {
-      Pv = product(5, (const double[]){4.0 / 3.0, Estar, sqrt(R), fmax(delta, 0.0), sd});
-      knv = product(4, (const double[]){2.0, Estar, sqrt(R), sd});
+      Pv = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sqrt(R), fmax(delta, 0.0), sd});
+      knv = dc_scaled_product(4, (const double[]){2.0, Estar, sqrt(R), sd});
     }
   } else {
     dc_feng_pair p;

@@ -3,24 +3,9 @@
 #include "dc/gw_rough.h"
 #include "dc/gw_integrals.h"
 #include "dc/status.h"
+#include "scaled_product.h"
 #include <math.h>
 
-/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
-   mantissas multiplied, exponents summed, one scaling (rounded as the
-   plain product would be when that stays in range) */
-static double product(int n, const double *x)
-{
-  double m = 1.0;
-  int e = 0;
-  for (int i = 0; i < n; i++) {
-    int k;
-    m *= frexp(x[i], &k);
-    e += k;
-    m = frexp(m, &k);
-    e += k;
-  }
-  return ldexp(m, e);
-}
 
 static int state_finite(const dc_gw_rough_state *s)
 {
@@ -48,9 +33,9 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
       s.h = -1e300;
       if (st != DC_OK || !state_finite(&s)) {   /* a product overflowed */
         const double sR = sqrt(g->R_force), sd = sqrt(delta);
-        s.F = product(6, (const double[]){n_asp, 4.0 / 3.0, Estar, sR, sd, delta});
-        s.kn = product(5, (const double[]){n_asp, 2.0, Estar, sR, sd});
-        s.area = product(4, (const double[]){n_asp, M_PI, g->R_area, delta});
+        s.F = dc_scaled_product(6, (const double[]){n_asp, 4.0 / 3.0, Estar, sR, sd, delta});
+        s.kn = dc_scaled_product(5, (const double[]){n_asp, 2.0, Estar, sR, sd});
+        s.area = dc_scaled_product(4, (const double[]){n_asp, M_PI, g->R_area, delta});
       }
     }
   } else {
@@ -64,9 +49,9 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
     s.area = n_asp * M_PI * g->Rc * sigma * g->beta * Fn[DC_GW_F1];
     s.h = h;
     if (!state_finite(&s)) {   /* a product overflowed */
-      s.F = product(8, (const double[]){n_asp, 4.0 / 3.0, Estar, sRc, sigma, ss, g->gamma, Fn[DC_GW_F32]});
-      s.kn = product(7, (const double[]){n_asp, 2.0, Estar, sRc, ss, g->gamma, Fn[DC_GW_F12]});
-      s.area = product(6, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, Fn[DC_GW_F1]});
+      s.F = dc_scaled_product(8, (const double[]){n_asp, 4.0 / 3.0, Estar, sRc, sigma, ss, g->gamma, Fn[DC_GW_F32]});
+      s.kn = dc_scaled_product(7, (const double[]){n_asp, 2.0, Estar, sRc, ss, g->gamma, Fn[DC_GW_F12]});
+      s.area = dc_scaled_product(6, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, Fn[DC_GW_F1]});
     }
   }
   if (!state_finite(&s)) return DC_ERANGE;

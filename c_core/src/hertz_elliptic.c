@@ -3,6 +3,7 @@
 #include "dc/hertz_elliptic.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include "scaled_product.h"
 #include <float.h>
 #include <math.h>
 
@@ -105,23 +106,6 @@ int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *out)
   return DC_OK;
 }
 
-/* x1 x2 x3 x4 x5 without overflow or underflow before the end: mantissas
-   multiplied, exponents summed, one scaling (rounded as the plain product
-   would be when that stays in range) */
-static double product5(double x1, double x2, double x3, double x4, double x5)
-{
-  const double x[5] = {x1, x2, x3, x4, x5};
-  double m = 1.0;
-  int e = 0;
-  for (int i = 0; i < 5; i++) {
-    int k;
-    m *= frexp(x[i], &k);
-    e += k;
-    m = frexp(m, &k);
-    e += k;
-  }
-  return ldexp(m, e);
-}
 
 int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta, dc_hertz_state *s)
 {
@@ -136,11 +120,11 @@ int dc_hertz_contact(const dc_hertz_geom *g, double Estar, double delta, dc_hert
   /* where an intermediate product overflowed: the same expression without
      overflow before the end; DC_ERANGE if a result itself does */
   const double sR = sqrt(g->R_force), sd = sqrt(delta);
-  if (!isfinite(h.F)) h.F = product5(4.0 / 3.0, Estar, sR, sd, delta);
-  if (!isfinite(h.kn)) h.kn = product5(2.0, Estar, sR, sd, 1.0);
-  if (!isfinite(h.area)) h.area = product5(M_PI, g->R_area, delta, 1.0, 1.0);
+  if (!isfinite(h.F)) h.F = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sR, sd, delta});
+  if (!isfinite(h.kn)) h.kn = dc_scaled_product(4, (const double[]){2.0, Estar, sR, sd});
+  if (!isfinite(h.area)) h.area = dc_scaled_product(3, (const double[]){M_PI, g->R_area, delta});
   if (!isfinite(h.a)) {
-    h.a = product5(sqrt(2.0 * g->D / g->K), sqrt(g->R_major), sd, 1.0, 1.0);
+    h.a = dc_scaled_product(3, (const double[]){sqrt(2.0 * g->D / g->K), sqrt(g->R_major), sd});
     h.b = h.a * sqrt(g->m1);
   }
   if (!(isfinite(h.F) && isfinite(h.kn) && isfinite(h.area) && isfinite(h.a))) return DC_ERANGE;

@@ -3,24 +3,9 @@
 #include "dc/rough_tangential.h"
 #include "dc/gw_integrals.h"
 #include "dc/status.h"
+#include "scaled_product.h"
 #include <math.h>
 
-/* x[0] x[1] ... x[n-1] without overflow or underflow before the end:
-   mantissas multiplied, exponents summed, one scaling (rounded as the
-   plain product would be when that stays in range) */
-static double product(int n, const double *x)
-{
-  double m = 1.0;
-  int e = 0;
-  for (int i = 0; i < n; i++) {
-    int k;
-    m *= frexp(x[i], &k);
-    e += k;
-    m = frexp(m, &k);
-    e += k;
-  }
-  return ldexp(m, e);
-}
 
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
                                   double sigma, double delta, double *kt)
@@ -42,7 +27,7 @@ int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_a
   }
   if (!isfinite(k)) {
     /* a product overflowed: the same without intermediate overflow */
-    k = product(7, (const double[]){2.0 * M_PI, n_asp, G, chi, sqrt(R_asp), sqrt(len), F12});
+    k = dc_scaled_product(7, (const double[]){2.0 * M_PI, n_asp, G, chi, sqrt(R_asp), sqrt(len), F12});
     if (!isfinite(k)) return DC_ERANGE;
   }
   *kt = k;

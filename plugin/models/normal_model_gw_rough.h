@@ -100,7 +100,12 @@ public:
           stopParam(err, i, j);
         dc_feng_init(mu[i][j], fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, &law);
         /* sigma = 0 pairs take the Hertz branch and never read theirs */
-        if (roughness[i][j] > 0.0) dc_feng_pair_init(&law, Yeff[i][j], roughness[i][j], &laws[i * (ntypes + 1) + j]);
+        if (roughness[i][j] > 0.0 && dc_feng_pair_init(&law, Yeff[i][j], roughness[i][j], &laws[i * (ntypes + 1) + j])) {
+          char msg[256];
+          snprintf(msg, sizeof msg, "surfaceRoughness %g with youngsModulus (E* = %g) for types %d and %d is out of "
+                   "the range of doubles", roughness[i][j], Yeff[i][j], i, j);
+          stop(true, msg);
+        }
       }
   }
 

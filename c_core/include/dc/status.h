@@ -1,4 +1,8 @@
-/* Status codes shared by every c_core law (GSL style: a value plus a status). */
+/* Status codes shared by every c_core law (GSL style: a value plus a status).
+   Every public function keeps these promises (tests/unit/test_fuzz.c): an
+   error leaves every output untouched (exception: the parameter checks of
+   dc/contract.h fill their dc_param_error, which is the report), DC_OK never
+   comes with a NaN or Inf output, non-finite inputs are DC_EDOM. */
 #ifndef DC_STATUS_H
 #define DC_STATUS_H
 
