@@ -158,13 +158,13 @@ private:
       }
     } else {
       dc_jkr_state s;
-      double F_pull;
+      double F_pull = 0.0;
       int st;
       if (!sq) {
         /* separation (contact = 0) is decided inside, with the same delta_break */
         st = dc_jkr_sphere(R_major, Y, w, delta, &s);
         if (forming) checkReach(sidata, -dc_jkr_sphere_delta_break(R_major, Y, w), whyReach(), w);
-        F_pull = dc_jkr_sphere_pulloff(R_major, w);
+        if (ax) F_pull = dc_jkr_sphere_pulloff(R_major, w);
       } else {
         dc_jkr_geom g;
         st = dc_jkr_geometry(R_major, R_minor, Y, w, &g);
