@@ -93,7 +93,7 @@ static void panel(acc_t *q, int map, double ta, double tb)
     if (map == MAP_TAU) { t = ta + (tb - ta) * p * p; dt = 2.0 * (tb - ta) * p; }
     else if (map == MAP_Y) { const double p2 = p * p; t = p2 * p2 - q->x_lo; dt = 4.0 * p2 * p; }
     else { t = p; dt = 1.0; }
-    dc_jkr_state st;
+    dc_jkr_state st = {0};   /* read below even when the summit failed (status kept) */
     const int r = dc_jkr_contact(q->g, q->uo + q->sigma * t, &q->hint, &st);
     q->n_eval++;
     /* a summit's failure; its compression can only be non-finite (EDOM
@@ -227,7 +227,7 @@ int dc_gw_rough_adhesive(const dc_jkr_geom *g, double n_asp, double sigma, doubl
     /* attachment term f(u0) phi(s0)/sigma */
     double f0 = g->F_break;
     if (branch == DC_GW_LOADING) {
-      dc_jkr_state st;
+      dc_jkr_state st = {0};
       const int r = dc_jkr_contact(g, 0.0, NULL, &st);
       q.n_eval++;
       if (r != DC_OK && q.status != DC_ERANGE) q.status = r;
