@@ -1,0 +1,645 @@
+/* Cattaneo-Mindlin-Deresiewicz tangential force and Mindlin twisting with
+   full load history (dc/cmd_tangential.h, review Eqs. 56-77, 85). */
+#include "dc/cmd_tangential.h"
+#include "dc/elliptic_integrals.h"
+#include "dc/status.h"
+#include <math.h>
+#include <string.h>
+
+_Static_assert(DC_CMD_MAX_SEG == 8, "the field table below lists 8 pieces");
+_Static_assert(sizeof(dc_cmd_state) == DC_CMD_HISTORY_NFIELDS * sizeof(double), "plain doubles");
+
+const dc_history_field dc_cmd_history[DC_CMD_HISTORY_NFIELDS] = {
+  {"cmd_n_prev_x", 1}, {"cmd_n_prev_y", 1}, {"cmd_n_prev_z", 1}, {"cmd_a_prev", 0}, {"cmd_nseg", 0},
+  {"cmd_xi_0", 0}, {"cmd_xi_1", 0}, {"cmd_xi_2", 0}, {"cmd_xi_3", 0}, {"cmd_xi_4", 0}, {"cmd_xi_5", 0}, {"cmd_xi_6", 0}, {"cmd_xi_7", 0},
+  {"cmd_u0_0_x", 1}, {"cmd_u0_0_y", 1}, {"cmd_u0_0_z", 1},
+  {"cmd_u0_1_x", 1}, {"cmd_u0_1_y", 1}, {"cmd_u0_1_z", 1},
+  {"cmd_u0_2_x", 1}, {"cmd_u0_2_y", 1}, {"cmd_u0_2_z", 1},
+  {"cmd_u0_3_x", 1}, {"cmd_u0_3_y", 1}, {"cmd_u0_3_z", 1},
+  {"cmd_u0_4_x", 1}, {"cmd_u0_4_y", 1}, {"cmd_u0_4_z", 1},
+  {"cmd_u0_5_x", 1}, {"cmd_u0_5_y", 1}, {"cmd_u0_5_z", 1},
+  {"cmd_u0_6_x", 1}, {"cmd_u0_6_y", 1}, {"cmd_u0_6_z", 1},
+  {"cmd_u0_7_x", 1}, {"cmd_u0_7_y", 1}, {"cmd_u0_7_z", 1},
+  {"cmd_u1_0_x", 1}, {"cmd_u1_0_y", 1}, {"cmd_u1_0_z", 1},
+  {"cmd_u1_1_x", 1}, {"cmd_u1_1_y", 1}, {"cmd_u1_1_z", 1},
+  {"cmd_u1_2_x", 1}, {"cmd_u1_2_y", 1}, {"cmd_u1_2_z", 1},
+  {"cmd_u1_3_x", 1}, {"cmd_u1_3_y", 1}, {"cmd_u1_3_z", 1},
+  {"cmd_u1_4_x", 1}, {"cmd_u1_4_y", 1}, {"cmd_u1_4_z", 1},
+  {"cmd_u1_5_x", 1}, {"cmd_u1_5_y", 1}, {"cmd_u1_5_z", 1},
+  {"cmd_u1_6_x", 1}, {"cmd_u1_6_y", 1}, {"cmd_u1_6_z", 1},
+  {"cmd_u1_7_x", 1}, {"cmd_u1_7_y", 1}, {"cmd_u1_7_z", 1},
+  {"cmd_nseg_t", 0},
+  {"cmd_xi_t_0", 0}, {"cmd_xi_t_1", 0}, {"cmd_xi_t_2", 0}, {"cmd_xi_t_3", 0}, {"cmd_xi_t_4", 0}, {"cmd_xi_t_5", 0}, {"cmd_xi_t_6", 0}, {"cmd_xi_t_7", 0},
+  {"cmd_t0_0", 0}, {"cmd_t0_1", 0}, {"cmd_t0_2", 0}, {"cmd_t0_3", 0}, {"cmd_t0_4", 0}, {"cmd_t0_5", 0}, {"cmd_t0_6", 0}, {"cmd_t0_7", 0},
+  {"cmd_t1_0", 0}, {"cmd_t1_1", 0}, {"cmd_t1_2", 0}, {"cmd_t1_3", 0}, {"cmd_t1_4", 0}, {"cmd_t1_5", 0}, {"cmd_t1_6", 0}, {"cmd_t1_7", 0},
+};
+
+int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err)
+{
+  if (dc_param_check("coefficientFriction", p->mu, 0.0, 0, HUGE_VAL, 1, "[0, inf)", err)) return DC_EDOM;
+  if (dc_param_check("tangentialViscoelasticTime", p->t_visc, 0.0, 0, HUGE_VAL, 1, "[0, inf) s", err))
+    return DC_EDOM;
+  if (p->dissipation != 0 && p->dissipation != 1) {
+    err->name = "cmdDissipation"; err->value = (double)p->dissipation; err->range = "{0 (off), 1 (on)}";
+    return DC_EDOM;
+  }
+  if (p->twisting != 0 && p->twisting != 1) {
+    err->name = "cmdTwisting"; err->value = (double)p->twisting; err->range = "{0 (off), 1 (on)}";
+    return DC_EDOM;
+  }
+  return DC_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* No-slip stiffnesses (review Eqs. 56-58 via dc/mindlin.h; Eq. 77).   */
+
+static int pair_ok(const dc_mindlin_pair *m)
+{
+  /* what dc_mindlin_pair_init gives: s0 > 0, -s0 < s1 <= s0/2 */
+  return isfinite(m->s0) && isfinite(m->s1) && m->s0 > 0.0 && m->s1 > -m->s0 && m->s1 <= 0.5 * m->s0;
+}
+
+static int axes_ok(double a, double b) { return isfinite(a) && isfinite(b) && b > 0.0 && b <= a && b >= 1e-150 * a; }
+
+/* Eqs. 56-57: compliances along the axes, c = 2 pi a / k */
+static void axis_compliances(const dc_mindlin_pair *m, const dc_ellint *el, double *c_major, double *c_minor)
+{
+  *c_major = (m->s0 - m->s1) * el->K + m->s1 * el->D;
+  *c_minor = m->s0 * el->K - m->s1 * el->D;
+}
+
+int dc_cmd_stiffness(const dc_mindlin_pair *m, double a, double b, double *k_major, double *k_minor)
+{
+  if (!pair_ok(m) || !axes_ok(a, b)) return DC_EDOM;
+  double km, kn;
+  if (a == b) {
+    km = kn = 8.0 * (a / (2.0 * m->s0 - m->s1));
+  } else {
+    const double g = b / a;
+    dc_ellint el;
+    if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
+    double cm, cn;
+    axis_compliances(m, &el, &cm, &cn);
+    km = 2.0 * M_PI * (a / cm);
+    kn = 2.0 * M_PI * (a / cn);
+  }
+  if (!isfinite(km) || !isfinite(kn)) return DC_ERANGE;
+  *k_major = km;
+  *k_minor = kn;
+  return DC_OK;
+}
+
+/* Eq. 77 generalised to two bodies: the 2x2 Cerruti system (header) */
+static double twist_stiffness(const dc_mindlin_pair *m, double a, double b, const dc_ellint *el)
+{
+  const double s0 = m->s0, s1 = m->s1, B = el->B, C = el->C, D = el->D;
+  const double a11 = (s0 - s1) * B + s1 * (D - C), a22 = (s0 - s1) * D + s1 * (D - C);
+  const double det = a11 * a22 - s1 * s1 * C * (B - D + C);
+  const double g = b / a;
+  const double num = (s0 * B - 2.0 * s1 * (B - D + C)) + g * g * (s0 * D - 2.0 * s1 * C);
+  return 2.0 * M_PI / 3.0 * a * a * (a * (num / det));
+}
+
+int dc_cmd_twist_stiffness(const dc_mindlin_pair *m, double a, double b, double *k)
+{
+  if (!pair_ok(m) || !axes_ok(a, b)) return DC_EDOM;
+  double kt;
+  if (a == b) {
+    kt = 16.0 / 3.0 * a * a * (a / m->s0);
+  } else {
+    const double g = b / a;
+    dc_ellint el;
+    if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
+    kt = twist_stiffness(m, a, b, &el);
+  }
+  if (!isfinite(kt)) return DC_ERANGE;
+  *k = kt;
+  return DC_OK;
+}
+
+int dc_cmd_twist_slip_moment(double mu, double F, double a, double b, double *M)
+{
+  if (!(isfinite(mu) && isfinite(F) && mu >= 0.0 && F >= 0.0) || !axes_ok(a, b)) return DC_EDOM;
+  double E = M_PI / 2.0;
+  if (a != b) {
+    const double g = b / a;
+    dc_ellint el;
+    if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
+    E = el.E;
+  }
+  const double Ms = 0.375 * E * mu * F * a;
+  if (!isfinite(Ms)) return DC_ERANGE;
+  *M = Ms;
+  return DC_OK;
+}
+
+/* ------------------------------------------------------------------ */
+/* The spring profile: pieces [x0, x1] of xi, each linear in xi^2 and  */
+/* given by its end values v0, v1.                                     */
+
+#define MAXP (3 * (DC_CMD_MAX_SEG + 1) + 4)
+#define SLIVER 1e-13   /* narrower pieces (in xi) join a neighbour */
+
+typedef struct {
+  double x0, x1;
+  double v0[3], v1[3];
+  double e[3];   /* slip direction (slipping pieces) */
+  int slip;
+} piece;
+
+/* weight of v1 in the mean of a piece: int = (x1 - x0) [(1 - w) v0 + w v1] */
+static inline double piece_w(double x0, double x1)
+{
+  const double s = x0 + x1;
+  return s > 0.0 ? (x1 + 2.0 * x0) / (3.0 * s) : 0.5;
+}
+
+/* Splits the trial piece [x0, x1] (end values p0, p1) where it leaves the
+   Coulomb limit L0 (1 - xi^2): |p(t)|^2 = l(t)^2 is a quadratic in
+   t = (xi^2 - x0^2)/(x1^2 - x0^2), both sides being linear in t. Appends
+   the parts (slip parts with their trial values; group() puts them on
+   the limit). */
+static void clamp_piece(int dim, double x0, double x1, const double *p0, const double *p1, double L0, piece *out,
+                        int *nout)
+{
+  const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
+  double q[3], S = l0;
+  for (int k = 0; k < dim; k++) {
+    q[k] = p1[k] - p0[k];
+    S = fmax(S, fmax(fabs(p0[k]), fabs(p1[k])));
+  }
+  double t[4] = {0.0, 1.0, 1.0, 1.0};
+  int nt = 1;
+  double iS = 0.0, la = 0.0, dl = 0.0;
+  if (S > 0.0) {
+    iS = 1.0 / S;
+    la = l0 * iS;
+    dl = (l1 - l0) * iS;
+    double A = -dl * dl, B = -la * dl, C = -la * la;   /* A t^2 + 2 B t + C */
+    for (int k = 0; k < dim; k++) {
+      const double ps = p0[k] * iS, qs = q[k] * iS;
+      A += qs * qs;
+      B += ps * qs;
+      C += ps * ps;
+    }
+    double r[2];
+    int nr = 0;
+    if (A != 0.0) {
+      const double disc = B * B - A * C;
+      if (disc > 0.0) {
+        const double qq = -(B + copysign(sqrt(disc), B));
+        if (qq != 0.0) { r[0] = qq / A; r[1] = C / qq; nr = 2; }
+      }
+    } else if (B != 0.0) {
+      r[0] = -C / (2.0 * B);
+      nr = 1;
+    }
+    if (nr == 2 && r[1] < r[0]) { const double tmp = r[0]; r[0] = r[1]; r[1] = tmp; }
+    for (int i = 0; i < nr; i++)
+      if (r[i] > 0.0 && r[i] < 1.0 && r[i] > t[nt - 1]) t[nt++] = r[i];
+  }
+  t[nt++] = 1.0;
+  const double s0 = x0 * x0, ds = (x1 - x0) * (x1 + x0);
+  for (int i = 0; i + 1 < nt; i++) {
+    const double ta = t[i], tb = t[i + 1], tm = 0.5 * (ta + tb);
+    piece *o = &out[(*nout)++];
+    o->x0 = i == 0 ? x0 : sqrt(s0 + ta * ds);
+    o->x1 = i + 2 == nt ? x1 : sqrt(s0 + tb * ds);
+    double g = 0.0;
+    for (int k = 0; k < dim; k++) {
+      o->v0[k] = i == 0 ? p0[k] : p0[k] + q[k] * ta;
+      o->v1[k] = i + 2 == nt ? p1[k] : p0[k] + q[k] * tb;
+      const double v = (p0[k] + q[k] * tm) * iS;
+      g += v * v;
+    }
+    const double l = la + dl * tm;
+    o->slip = S > 0.0 && g > l * l;
+  }
+}
+
+static inline double norm_dir(int dim, const double *I, double *e)
+{
+  if (dim == 1) {
+    e[0] = I[0] > 0.0 ? 1.0 : I[0] < 0.0 ? -1.0 : 0.0;
+    return fabs(I[0]);
+  }
+  const double m = fmax(fabs(I[0]), fmax(fabs(I[1]), fabs(I[2])));
+  if (!(m > 0.0) || !isfinite(m)) { e[0] = e[1] = e[2] = 0.0; return m; }
+  const double x = I[0] / m, y = I[1] / m, z = I[2] / m, l = sqrt(x * x + y * y + z * z);
+  e[0] = x / l; e[1] = y / l; e[2] = z / l;
+  return m * l;
+}
+
+/* Puts each contiguous slipping zone on its limit with one direction, that
+   of its integrated trial values; returns the stuck length (sum of the
+   stuck widths, theta of Eqs. 70-71). */
+static double group(int dim, const piece *pc, int np, double L0, piece *out, int *nout)
+{
+  double stick = 0.0;
+  int no = 0;
+  for (int i = 0; i < np;) {
+    if (!pc[i].slip) {
+      stick += pc[i].x1 - pc[i].x0;
+      out[no++] = pc[i++];
+      continue;
+    }
+    double I[3] = {0.0, 0.0, 0.0};
+    const double xa = pc[i].x0;
+    double xb = xa;
+    int j = i;
+    do {
+      const double h = pc[j].x1 - pc[j].x0, w = piece_w(pc[j].x0, pc[j].x1);
+      double Ij[3], dot = 0.0;
+      for (int k = 0; k < dim; k++) {
+        Ij[k] = h * ((1.0 - w) * pc[j].v0[k] + w * pc[j].v1[k]);
+        dot += Ij[k] * I[k];
+      }
+      if (j > i && dot < 0.0) break;   /* opposite slip: a zone of its own */
+      for (int k = 0; k < dim; k++) I[k] += Ij[k];
+      xb = pc[j].x1;
+      j++;
+    } while (j < np && pc[j].slip);
+    piece *o = &out[no++];
+    o->x0 = xa;
+    o->x1 = xb;
+    o->slip = 1;
+    norm_dir(dim, I, o->e);
+    const double la = L0 * ((1.0 - xa) * (1.0 + xa)), lb = L0 * ((1.0 - xb) * (1.0 + xb));
+    for (int k = 0; k < dim; k++) {
+      o->v0[k] = la * o->e[k];
+      o->v1[k] = lb * o->e[k];
+    }
+    i = j;
+  }
+  *nout = no;
+  return stick;
+}
+
+/* Removes slivers (into a neighbour) and joins neighbouring slip zones of
+   one direction. */
+static int tidy(int dim, piece *pc, int np, double L0)
+{
+  int no = 0;
+  for (int i = 0; i < np; i++) {
+    const piece *p = &pc[i];
+    if (p->x1 - p->x0 < SLIVER && np > 1) {
+      if (no > 0) { pc[no - 1].x1 = p->x1; continue; }
+      if (i + 1 < np) { pc[i + 1].x0 = p->x0; continue; }
+    }
+    if (no > 0 && p->slip && pc[no - 1].slip) {
+      double d = 0.0;
+      for (int k = 0; k < dim; k++) d += p->e[k] * pc[no - 1].e[k];
+      if (d > 1.0 - 1e-14) {
+        piece *q = &pc[no - 1];
+        q->x1 = p->x1;
+        const double lb = L0 * ((1.0 - q->x1) * (1.0 + q->x1));
+        for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
+        continue;
+      }
+    }
+    pc[no++] = *p;
+  }
+  return no;
+}
+
+/* int_x0^x1 phi^k dxi, phi = (xi^2 - x0^2)/(x1^2 - x0^2), k = 1, 2 */
+static inline void moments(double x0, double x1, double *J1, double *J2)
+{
+  const double h = x1 - x0, d = h + 2.0 * x0;
+  if (!(d > 0.0)) { *J1 = *J2 = 0.0; return; }
+  *J1 = h * (h / 3.0 + x0) / d;
+  *J2 = h * (h * h / 5.0 + x0 * h + 4.0 / 3.0 * x0 * x0) / (d * d);
+}
+
+/* Least-squares fit of pieces i, i+1 by one piece (linear in xi^2) over
+   their union: the projection on {1, phi} keeps int u dxi (the force) and
+   int u xi^2 dxi. Returns the squared L2 change; the fit in *f. */
+static double merge_fit(int dim, const piece *pc, int i, piece *f)
+{
+  const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
+  double g01, g11;
+  moments(xa, xb, &g01, &g11);
+  const double g00 = xb - xa;
+  double m0[3] = {0, 0, 0}, m1[3] = {0, 0, 0}, e2 = 0.0;
+  memset(f, 0, sizeof *f);
+  for (int j = i; j <= i + 1; j++) {
+    const piece *p = &pc[j];
+    double J1, J2;
+    moments(p->x0, p->x1, &J1, &J2);
+    const double J0 = p->x1 - p->x0;
+    const double lam = (p->x0 - xa) * (p->x0 + xa) / S, kap = (p->x1 - p->x0) * (p->x1 + p->x0) / S;
+    for (int k = 0; k < dim; k++) {
+      const double dv = p->v1[k] - p->v0[k];
+      const double I0 = p->v0[k] * J0 + dv * J1, Ip = p->v0[k] * J1 + dv * J2;
+      m0[k] += I0;
+      m1[k] += lam * I0 + kap * Ip;
+      e2 += p->v0[k] * p->v0[k] * J0 + 2.0 * p->v0[k] * dv * J1 + dv * dv * J2;
+    }
+  }
+  const double det = g00 * g11 - g01 * g01;
+  double proj = 0.0;
+  f->x0 = xa;
+  f->x1 = xb;
+  f->slip = 0;
+  for (int k = 0; k < dim; k++) {
+    double c0, c1;
+    if (det > 0.0) {
+      c0 = (g11 * m0[k] - g01 * m1[k]) / det;
+      c1 = (g00 * m1[k] - g01 * m0[k]) / det;
+    } else {
+      c0 = g00 > 0.0 ? m0[k] / g00 : 0.5 * (pc[i].v0[k] + pc[i + 1].v1[k]);
+      c1 = 0.0;
+    }
+    f->v0[k] = c0;
+    f->v1[k] = c0 + c1;
+    proj += c0 * m0[k] + c1 * m1[k];
+  }
+  return e2 - proj;
+}
+
+/* Merges the cheapest neighbours until at most DC_CMD_MAX_SEG remain. */
+static int cap(int dim, piece *pc, int np)
+{
+  while (np > DC_CMD_MAX_SEG) {
+    int best = 0;
+    double bc = HUGE_VAL;
+    piece bf = pc[0], f;
+    for (int i = 0; i + 1 < np; i++) {
+      const double c = merge_fit(dim, pc, i, &f);
+      if (c < bc || i == 0) { bc = c; best = i; bf = f; }
+    }
+    pc[best] = bf;
+    for (int i = best + 1; i + 1 < np; i++) pc[i] = pc[i + 1];
+    np--;
+  }
+  return np;
+}
+
+/* One step of a profile with dim components: the stored pieces (xi,
+   u0, u1; stride dim) rescaled by r = a_prev / a, the increment d for the
+   stuck springs, entering rim, clamp, group, tidy, cap. Returns the number
+   of pieces in out; *stick and I = int_0^1 u dxi. */
+static int profile_step(int dim, int n, const double *xi, const double *u0, const double *u1, double r,
+                        const double *d, double L0, piece *out, double *stick, double *I)
+{
+  piece trial[MAXP];
+  int np = 0;
+  if (n == 0) {
+    clamp_piece(dim, 0.0, 1.0, d, d, L0, trial, &np);
+  } else {
+    double x0 = 0.0;
+    for (int j = 0; j < n; j++) {
+      const double xs = x0;
+      double xe = xi[j] * r;
+      x0 = xe;
+      if (xs >= 1.0) break;
+      double p0[3], p1[3];
+      const double *a0 = u0 + dim * j, *a1 = u1 + dim * j;
+      if (xe > 1.0) {
+        const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
+        for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
+        xe = 1.0;
+        x0 = 1.0;
+      } else {
+        for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
+      }
+      for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
+      if (xe > xs) clamp_piece(dim, xs, xe, p0, p1, L0, trial, &np);
+    }
+    if (x0 < 1.0) {
+      /* the rim entered during the step (linearly in xi^2): loaded by the
+         part of d after its entry */
+      const double z[3] = {0.0, 0.0, 0.0};
+      clamp_piece(dim, x0, 1.0, d, z, L0, trial, &np);
+    }
+  }
+  int no;
+  *stick = group(dim, trial, np, L0, out, &no);
+  no = tidy(dim, out, no, L0);
+  no = cap(dim, out, no);
+  for (int k = 0; k < dim; k++) I[k] = 0.0;
+  for (int j = 0; j < no; j++) {
+    const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
+    for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
+  }
+  return no;
+}
+
+/* ------------------------------------------------------------------ */
+
+static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Turns v (normal to a) with the rotation taking the unit a to the unit b
+   (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
+   c = a.b, w = a x b), then removes what is left along b. */
+static inline void turn(const double *w, double c, double ic, const double *b, double *v)
+{
+  const double wv = dot3(w, v) * ic;
+  double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
+                 c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
+                 c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
+  const double rn = dot3(r, b);
+  for (int k = 0; k < 3; k++) v[k] = r[k] - rn * b[k];
+}
+
+/* Projects v onto the plane normal to b, keeping |v| (a turn by nearly pi). */
+static inline void project_keep(const double *b, double *v)
+{
+  const double l = sqrt(dot3(v, v)), vn = dot3(v, b);
+  double r[3] = {v[0] - vn * b[0], v[1] - vn * b[1], v[2] - vn * b[2]};
+  const double lr = sqrt(dot3(r, r));
+  const double f = lr > 0.0 ? l / lr : 0.0;
+  for (int k = 0; k < 3; k++) v[k] = r[k] * f;
+}
+
+int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
+                const double n[3], const double du[3], double dphi, double dt,
+                dc_cmd_state *h, dc_cmd_out *out)
+{
+  /* ---- inputs: finiteness and domain */
+  const double a = patch->a, b = patch->b, Fb = patch->F_bound, mu = p->mu;
+  double chk = 0.0 * (a + b + Fb + patch->formed + patch->axis[0] + patch->axis[1] + patch->axis[2] + mu +
+                      n[0] + n[1] + n[2] + du[0] + du[1] + du[2] + m->s0 + m->s1 + h->a_prev + h->nseg +
+                      h->nseg_t + h->n_prev[0] + h->n_prev[1] + h->n_prev[2]);
+  if (p->twisting) chk += 0.0 * dphi;
+  if (p->dissipation) chk += 0.0 * (dt + p->t_visc);
+  if (chk != 0.0) return DC_EDOM;   /* NaN: an input is not finite */
+  if (!(mu >= 0.0 && p->t_visc >= 0.0 && (p->dissipation == 0 || p->dissipation == 1) &&
+        (p->twisting == 0 || p->twisting == 1) && pair_ok(m) && Fb >= 0.0 && b >= 0.0 && a >= b &&
+        (a == 0.0 || b >= 1e-150 * a) && (!p->dissipation || dt > 0.0)))
+    return DC_EDOM;
+  const double nn = dot3(n, n);
+  if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
+  const int ns = (int)h->nseg, nt = (int)h->nseg_t;
+  if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->nseg_t == (double)nt && nt >= 0 &&
+        nt <= DC_CMD_MAX_SEG && h->a_prev >= 0.0))
+    return DC_EDOM;
+  for (int j = 0; j < ns; j++)
+    chk += 0.0 * (h->xi[j] + h->u0[j][0] + h->u0[j][1] + h->u0[j][2] + h->u1[j][0] + h->u1[j][1] + h->u1[j][2]);
+  if (p->twisting)
+    for (int j = 0; j < nt; j++) chk += 0.0 * (h->xi_t[j] + h->t0[j] + h->t1[j]);
+  if (chk != 0.0) return DC_EDOM;
+
+  const int elliptic = a > b;
+  const double axl = dot3(patch->axis, patch->axis);
+  if (elliptic && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
+
+  /* ---- not formed, or no area: the history starts afresh */
+  if (patch->formed == 0.0 || a == 0.0) {
+    memset(h, 0, sizeof *h);
+    memset(out, 0, sizeof *out);
+    return DC_OK;
+  }
+
+  /* ---- geometry: unit normal, stiffnesses, the map M of the increment */
+  const double in = 1.0 / sqrt(nn);
+  const double nh[3] = {n[0] * in, n[1] * in, n[2] * in};
+  double k_major, rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
+  dc_ellint el;
+  const int ell = elliptic && axl > 0.0;
+  if (!ell) {
+    k_major = 8.0 * (a / (2.0 * m->s0 - m->s1));
+  } else {
+    const double g = b / a;
+    if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
+    double cm, cn;
+    axis_compliances(m, &el, &cm, &cn);
+    k_major = 2.0 * M_PI * (a / cm);
+    rho = cm / cn;   /* k_minor / k_major */
+    const double an = dot3(patch->axis, nh);
+    for (int k = 0; k < 3; k++) ax[k] = patch->axis[k] - an * nh[k];
+    const double al = sqrt(dot3(ax, ax));
+    if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
+    for (int k = 0; k < 3; k++) ax[k] /= al;
+  }
+  const double dn = dot3(du, nh);
+  const double dut[3] = {du[0] - dn * nh[0], du[1] - dn * nh[1], du[2] - dn * nh[2]};
+  double d[3];
+  if (ell) {
+    const double da = (1.0 - rho) * dot3(ax, dut);
+    for (int k = 0; k < 3; k++) d[k] = rho * dut[k] + da * ax[k];
+  } else {
+    for (int k = 0; k < 3; k++) d[k] = dut[k];
+  }
+
+  /* ---- the stored force profile, turned with the plane */
+  const int fresh = !(h->a_prev > 0.0);
+  const double r = fresh ? 1.0 : h->a_prev / a;
+  double U0[DC_CMD_MAX_SEG][3], U1[DC_CMD_MAX_SEG][3];
+  const int nsu = fresh ? 0 : ns;
+  if (nsu > 0) {
+    memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
+    memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
+    const double *np0 = h->n_prev;
+    const double c = dot3(np0, nh);
+    if (c != 1.0 || np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
+      if (c > -0.999) {
+        const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
+                             np0[0] * nh[1] - np0[1] * nh[0]};
+        const double ic = 1.0 / (1.0 + c);
+        for (int j = 0; j < nsu; j++) {
+          turn(w, c, ic, nh, U0[j]);
+          turn(w, c, ic, nh, U1[j]);
+        }
+      } else {
+        for (int j = 0; j < nsu; j++) {
+          project_keep(nh, U0[j]);
+          project_keep(nh, U1[j]);
+        }
+      }
+    }
+  }
+
+  /* ---- force: Coulomb limits L0 (1 - xi^2) integrate to mu F_bound */
+  const double L0 = 1.5 * mu * Fb / k_major;
+  piece pf[MAXP];
+  double stick, I[3];
+  const int nf = profile_step(3, nsu, h->xi, &U0[0][0], &U1[0][0], r, d, L0, pf, &stick, I);
+  double F[3] = {k_major * I[0], k_major * I[1], k_major * I[2]};
+  {
+    const double fn = dot3(F, nh);
+    for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+  }
+  /* tangent stiffness along du (Eqs. 68, 70: theta k) */
+  double dir[3];
+  double kt;
+  {
+    double l = norm_dir(3, dut, dir);
+    if (!(l > 0.0)) l = norm_dir(3, F, dir);
+    const double ea = dot3(dir, ax);
+    kt = stick * k_major * (l > 0.0 && ell ? rho + (1.0 - rho) * ea * ea : ell ? 0.5 * (1.0 + rho) : 1.0);
+  }
+  if (p->dissipation) {
+    /* Eq. 85: A_t (theta K0) d(delta)/dt */
+    const double f = p->t_visc / dt * stick * k_major;
+    for (int k = 0; k < 3; k++) F[k] += f * d[k];
+  }
+  {
+    const double lim = mu * Fb, f2 = dot3(F, F);
+    if (f2 > lim * lim) {
+      const double s = lim / sqrt(f2);
+      for (int k = 0; k < 3; k++) F[k] *= s;
+    }
+  }
+
+  /* ---- twisting (Eq. 77; full slip 3/8 mu F a E) */
+  piece pt[MAXP];
+  int ntw = 0;
+  double Mt = 0.0, kr = 0.0;
+  if (p->twisting) {
+    double ktw, E;
+    if (!ell) {
+      ktw = 16.0 / 3.0 * a * a * (a / m->s0);
+      E = M_PI / 2.0;
+    } else {
+      ktw = twist_stiffness(m, a, b, &el);
+      E = el.E;
+    }
+    const double Ms = 0.375 * E * mu * Fb * a;
+    const double Lt = 1.5 * Ms / ktw;
+    double st, It;
+    ntw = profile_step(1, fresh ? 0 : nt, h->xi_t, h->t0, h->t1, r, &dphi, Lt, pt, &st, &It);
+    Mt = ktw * It;
+    if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
+    kr = ktw * st;
+  }
+
+  /* ---- results finite, then commit */
+  double fin = 0.0 * (F[0] + F[1] + F[2] + kt + stick + Mt + kr);
+  for (int j = 0; j < nf; j++)
+    fin += 0.0 * (pf[j].x1 + pf[j].v0[0] + pf[j].v0[1] + pf[j].v0[2] + pf[j].v1[0] + pf[j].v1[1] + pf[j].v1[2]);
+  for (int j = 0; j < ntw; j++) fin += 0.0 * (pt[j].x1 + pt[j].v0[0] + pt[j].v1[0]);
+  if (fin != 0.0) return DC_ERANGE;
+
+  for (int k = 0; k < 3; k++) {
+    out->Ft[k] = F[k];
+    h->n_prev[k] = nh[k];
+  }
+  out->kt = kt;
+  out->stick = stick;
+  out->Mt = Mt;
+  out->kr = kr;
+  h->a_prev = a;
+  h->nseg = nf;
+  for (int j = 0; j < nf; j++) {
+    h->xi[j] = pf[j].x1;
+    for (int k = 0; k < 3; k++) {
+      h->u0[j][k] = pf[j].v0[k];
+      h->u1[j][k] = pf[j].v1[k];
+    }
+  }
+  for (int j = nf; j < DC_CMD_MAX_SEG; j++) {
+    h->xi[j] = 0.0;
+    for (int k = 0; k < 3; k++) h->u0[j][k] = h->u1[j][k] = 0.0;
+  }
+  if (p->twisting) {
+    h->nseg_t = ntw;
+    for (int j = 0; j < ntw; j++) {
+      h->xi_t[j] = pt[j].x1;
+      h->t0[j] = pt[j].v0[0];
+      h->t1[j] = pt[j].v1[0];
+    }
+    for (int j = ntw; j < DC_CMD_MAX_SEG; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
+  }
+  return DC_OK;
+}
