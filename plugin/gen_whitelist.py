@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Writes the model whitelist (the contact-model combinations compiled for
 speed) from the decks: every `pair_style gran` and `fix ... wall/gran` line
-of inputs/, examples/ and tests/bench/, with ${model} taken as each normal
-model the deck, its check script (tests/regression/check_<case>.py) or the
-benchmark script names. Run by plugin/CMakeLists.txt at configure time.
+of inputs/, examples/ and tests/bench/, with a ${variable} after a model
+keyword (model, tangential, ...) taken as each model of that kind the deck,
+its check script (tests/regression/check_<case>.py) or the benchmark script
+names. Run by plugin/CMakeLists.txt at configure time.
 A deck line naming an unknown model is an error (exit 2).
 Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT"""
 import glob
@@ -51,14 +52,21 @@ for deck in sorted(decks):
     case = os.path.basename(os.path.dirname(deck))
     script = os.path.join(ROOT, "tests", "regression", "check_%s.py" % case)
     around = text + (open(script).read() if os.path.exists(script) else "") + (bench if "bench" in deck else "")
-    models = {m for (kind, m) in enums if kind == "NORMAL" and re.search(r"\b%s\b" % re.escape(m), around)}
+    named = lambda kind: sorted(m for (k, m) in enums if k == kind and re.search(r"\b%s\b" % re.escape(m), around))
     for line in text.split("\n"):
         line = line.split("#")[0]
         words = line.split()
         if not (line.startswith("pair_style") and "gran" in words[:2] or "wall/gran" in words):
             continue
-        for m in sorted(models) if "${model}" in line else [None]:
-            combo = combination([m if w == "${model}" else w for w in words], os.path.relpath(deck, ROOT))
+        # a ${variable} after a model keyword: every model of that kind the deck or its scripts name
+        variants = [[]]
+        for k, w in enumerate(words):
+            choices = [w]
+            if w.startswith("${") and k > 0 and words[k - 1] in KINDS:
+                choices = named(KINDS[words[k - 1]])
+            variants = [v + [c] for v in variants for c in choices]
+        for v in variants:
+            combo = combination(v, os.path.relpath(deck, ROOT))
             if combo not in used:
                 used.append(combo)
 text = "".join("GRAN_MODEL(%s)\n" % ", ".join(c) for c in sorted(used))

@@ -51,6 +51,23 @@ inline double closeSphereContact(SurfacesCloseData &scdata, double &vn)
   return delta;
 }
 
+/* For a sphere contact handed to surfacesClose after closeSphereContact
+   (en set, overlap delta < 0): the relative tangential velocity at the
+   contact point, as LIGGGHTS' default surface model computes it for
+   touching pairs (lever arms r_i - delta/2). */
+inline void closeTangentialVelocity(const SurfacesCloseData &d, const double *en, double delta, double vtr[3])
+{
+  double vr[3], w[3];
+  for (int k = 0; k < 3; k++) vr[k] = d.v_i[k] - (d.is_wall ? 0.0 : d.v_j[k]);
+  const double vn = vr[0] * en[0] + vr[1] * en[1] + vr[2] * en[2];
+  const double cri = d.radi - 0.5 * delta;
+  for (int k = 0; k < 3; k++) w[k] = cri * d.omega_i[k] + (d.is_wall ? 0.0 : (d.radj - 0.5 * delta) * d.omega_j[k]);
+  /* v_t - (w x en), w = cr_i omega_i + cr_j omega_j */
+  vtr[0] = vr[0] - vn * en[0] - (w[1] * en[2] - w[2] * en[1]);
+  vtr[1] = vr[1] - vn * en[1] - (w[2] * en[0] - w[0] * en[2]);
+  vtr[2] = vr[2] - vn * en[2] - (w[0] * en[1] - w[1] * en[0]);
+}
+
 /* Adds Fn along en to i (and -Fn to j), with the torque of a force off the
    centre line for non-spherical particles; walls scale by area_ratio. */
 inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, double **x,

@@ -78,6 +78,13 @@ public:
     superquadric_atoms_ = lmp->atom->superquadric_flag;
   }
 
+  /* Whether the normal model keeps this contact formed (false under a
+     stock normal model, whose contacts end when the surfaces part). */
+  bool formed(const SurfacesCloseData &d) const
+  {
+    return offset_ >= 0 && d.contact_history[offset_ + DC_PATCH_NFIELDS - 1] != 0.0;
+  }
+
   /* The patch of a touching contact; under a stock normal model the circle
      of radius (R delta)^1/2 with the elastic force kn delta. */
   void read(const SurfacesIntersectData &sidata, dc_patch &p) const

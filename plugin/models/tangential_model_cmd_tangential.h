@@ -1,0 +1,249 @@
+/* LIGGGHTS tangential model `cmd_tangential`: Cattaneo-Mindlin-Deresiewicz
+   tangential force of elliptic and circular contacts with full load history,
+   and (setting) Mindlin twisting (c_core: dc/cmd_tangential.h, review
+   Sec. 3.1).
+
+   Deck: pair_style gran model <normal> tangential cmd_tangential [settings]
+         fix ID all wall/gran model <normal> tangential cmd_tangential ... [settings]
+   Settings:
+     cmdTwisting on|off     Mindlin twisting moment about the contact normal (default off)
+     cmdDissipation on|off  tangential viscoelastic dissipation, review Eq. 85 (default off;
+                            property tangentialViscoelasticTime peratomtypepair [s])
+   Properties: coefficientFriction (peratomtypepair, >= 0), youngsModulus and
+     poissonsRatio (peratomtype: Mindlin's stiffness of each pair of bodies).
+   The contact patch (semi-axes, major axis, friction load, formed flag)
+   comes from the normal model (contact_patch.h); under a stock normal model
+   it is the circle a = (R delta)^1/2 with friction load = its elastic force.
+   The force acts while the normal model says the contact is formed: for
+   jkr_elliptic also in tension, bounded by mu (F + 2 F_pulloff). The
+   normal model's tangential_damping does not apply: dissipation is the
+   law's own (slip, and cmdDissipation). */
+#ifdef TANGENTIAL_MODEL
+TANGENTIAL_MODEL(TANGENTIAL_CMD,cmd_tangential,@DC_MODEL_ID@)
+#else
+#ifndef TANGENTIAL_MODEL_CMD_TANGENTIAL_H_
+#define TANGENTIAL_MODEL_CMD_TANGENTIAL_H_
+
+#include <cstdio>
+#include <cstring>
+#include <vector>
+#include "atom.h"
+#include "contact_frame.h"
+#include "contact_models.h"
+#include "contact_patch.h"
+#include "error.h"
+#include "global_properties.h"
+#include "neighbor.h"
+#include "tangential_model_base.h"
+#include "update.h"
+#include "dc/cmd_tangential.h"
+#include "dc/contract.h"
+#include "dc/mindlin.h"
+#include "dc/status.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template<>
+class TangentialModel<TANGENTIAL_CMD> : public TangentialModelBase
+{
+public:
+  TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
+    TangentialModelBase(lmp, hsetup, c), coeffFrict(NULL), tvisc(NULL), twisting(false), dissipation(false),
+    history_offset(-1), ntypes(0)
+  {
+    patch.request(c);
+    /* LIGGGHTS' contact-history pages hold neigh_modify one x (values per
+       contact); with this many values the default page (100000) is too
+       small and LIGGGHTS fails without a message: grow it (the margin
+       covers the other models' values) */
+    const int need = neighbor->oneatom * (DC_CMD_HISTORY_NFIELDS + 40);
+    if (neighbor->pgsize < need) neighbor->pgsize = need;
+    for (int k = 0; k < DC_CMD_HISTORY_NFIELDS; k++) {
+      const int off = hsetup->add_history_value(dc_cmd_history[k].name, dc_cmd_history[k].flips ? "1" : "0");
+      if (k == 0) history_offset = off;
+    }
+  }
+
+  void registerSettings(Settings &settings)
+  {
+    settings.registerOnOff("cmdTwisting", twisting, false);
+    settings.registerOnOff("cmdDissipation", dissipation, false);
+  }
+
+  void postSettings(IContactHistorySetup *, ContactModelBase *c) { patch.setup(lmp, c); }
+
+  void connectToProperties(PropertyRegistry &registry)
+  {
+    const char *caller = "tangential_model cmd_tangential";
+    registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
+    registry.connect("coeffFrict", coeffFrict, caller);
+    if (dissipation) {
+      registry.registerProperty("tangentialViscoelasticTime", &createTvisc);
+      registry.connect("tangentialViscoelasticTime", tvisc, caller);
+    }
+    registry.registerProperty("youngsModulus", &MODEL_PARAMS::createYoungsModulus);
+    registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio);
+    const double *E = registry.getVectorProperty("youngsModulus", caller)->data;
+    const double *nu = registry.getVectorProperty("poissonsRatio", caller)->data;
+    ntypes = registry.max_type();
+    params.assign((ntypes + 1) * (ntypes + 1), dc_cmd_params());
+    pairs.assign((ntypes + 1) * (ntypes + 1), dc_mindlin_pair());
+    for (int i = 1; i <= ntypes; i++)
+      for (int j = 1; j <= ntypes; j++) {
+        dc_cmd_params &p = params[i * (ntypes + 1) + j];
+        p.mu = coeffFrict[i][j];
+        p.t_visc = dissipation ? tvisc[i][j] : 0.0;
+        p.dissipation = dissipation;
+        p.twisting = twisting;
+        dc_param_error err;
+        char msg[256];
+        if (dc_cmd_check(&p, &err) != DC_OK) {
+          dc_param_error_format(&err, i, j, msg, sizeof msg);
+          stop(msg);
+        }
+        if (dc_mindlin_pair_init(E[i], nu[i], E[j], nu[j], &pairs[i * (ntypes + 1) + j]) != DC_OK) {
+          snprintf(msg, sizeof msg, "youngsModulus %g, %g and poissonsRatio %g, %g for types %d and %d: need E > 0 "
+                   "and poissonsRatio in (-1, 0.5]", E[i], E[j], nu[i], nu[j], i, j);
+          stop(msg);
+        }
+      }
+  }
+
+  inline void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  {
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+    const double vtr[3] = {sidata.vtr1, sidata.vtr2, sidata.vtr3};
+    step(sidata, vtr, sidata.cri, sidata.crj, i_forces, j_forces);
+  }
+
+  /* A contact the normal model keeps formed although the surfaces are apart
+     (jkr_elliptic in tension): the force acts as long as it is formed. */
+  void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
+  {
+    dc_cmd_state *h = state(scdata);
+    if (!patch.formed(scdata) || scdata.is_non_spherical) {
+      if (h->a_prev != 0.0) memset(h, 0, sizeof *h);
+      return;
+    }
+    SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+    /* the normal model has set en (and, for pairs, the overlap from r) */
+    const double delta = sidata.is_wall ? sidata.deltan : sidata.radsum - sqrt(sidata.rsq);
+    double vtr[3];
+    closeTangentialVelocity(sidata, sidata.en, delta, vtr);
+    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+    step(sidata, vtr, sidata.radi - 0.5 * delta, sidata.radj - 0.5 * delta, i_forces, j_forces);
+  }
+
+  void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+
+private:
+  dc_cmd_state *state(const SurfacesCloseData &d) const
+  {
+    return reinterpret_cast<dc_cmd_state *>(&d.contact_history[history_offset]);
+  }
+
+  void stop(const char *what)
+  {
+    char msg[384];
+    snprintf(msg, sizeof msg, "Tangential model cmd_tangential: %s", what);
+    error->all(FLERR, msg);
+  }
+
+  /* One step: c_core's law on this step's displacement, force and moment
+     applied (force on i is -Ft, lever arms cri, crj for spheres). */
+  void step(const SurfacesIntersectData &sidata, const double *vtr, double cri, double crj,
+            ForceData &i_forces, ForceData &j_forces)
+  {
+    const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
+    const double dt = update->dt;
+    dc_patch p;
+    patch.read(sidata, p);
+    const double du[3] = {vtr[0] * dt, vtr[1] * dt, vtr[2] * dt};
+    double dphi = 0.0;
+    if (twisting) {
+      const double *wi = sidata.omega_i, *wj = sidata.omega_j, *n = sidata.en;
+      const double w[3] = {wi[0] - (sidata.is_wall ? 0.0 : wj[0]), wi[1] - (sidata.is_wall ? 0.0 : wj[1]),
+                           wi[2] - (sidata.is_wall ? 0.0 : wj[2])};
+      dphi = (w[0] * n[0] + w[1] * n[1] + w[2] * n[2]) * dt;
+    }
+    dc_cmd_state *h = state(sidata);
+    dc_cmd_state scratch;
+    if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
+      scratch = *h;
+      h = &scratch;
+    }
+    dc_cmd_out out;
+    const int st = dc_cmd_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out);
+    if (st != DC_OK) {
+      char msg[384];
+      snprintf(msg, sizeof msg, "Tangential model cmd_tangential: contact of atom %d: patch a = %g, b = %g, friction "
+               "load %g, displacement %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.b, p.F_bound, du[0], du[1],
+               du[2], dc_status_str(st));
+      error->one(FLERR, msg);
+    }
+    const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
+    applyTangentialForce(sidata, F, cri, crj, i_forces, j_forces);
+    if (twisting) {
+      for (int c = 0; c < 3; c++) {
+        i_forces.delta_torque[c] -= out.Mt * sidata.en[c];
+        if (!sidata.is_wall) j_forces.delta_torque[c] += out.Mt * sidata.en[c];
+      }
+    }
+  }
+
+  /* The tangential force F on i (-F on j) at the contact point, with its
+     torques (spheres: lever arms cri, crj along -en and +en). */
+  void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
+                            ForceData &i_forces, ForceData &j_forces)
+  {
+    const double *n = sidata.en;
+    const double t[3] = {n[1] * F[2] - n[2] * F[1], n[2] * F[0] - n[0] * F[2], n[0] * F[1] - n[1] * F[0]};
+    double ti[3], tj[3];
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+    if (sidata.is_non_spherical) {
+      double xc[3];
+      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, atom->x[sidata.i], xc);
+      LAMMPS_NS::vectorCross3D(xc, F, ti);
+      if (!sidata.is_wall) {
+        const double Fj[3] = {-F[0], -F[1], -F[2]};
+        LAMMPS_NS::vectorSubtract3D(sidata.contact_point, atom->x[sidata.j], xc);
+        LAMMPS_NS::vectorCross3D(xc, Fj, tj);
+      }
+    } else
+#endif
+    {
+      for (int c = 0; c < 3; c++) {
+        ti[c] = -cri * t[c];
+        tj[c] = -crj * t[c];
+      }
+    }
+    const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
+    for (int c = 0; c < 3; c++) {
+      i_forces.delta_F[c] += scale * F[c];
+      i_forces.delta_torque[c] += scale * ti[c];
+      if (!sidata.is_wall) {
+        j_forces.delta_F[c] -= F[c];
+        j_forces.delta_torque[c] += tj[c];
+      }
+    }
+  }
+
+  static MatrixProperty *createTvisc(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "tangentialViscoelasticTime", caller, sanity_checks, 0.0);
+  }
+
+  double **coeffFrict, **tvisc;
+  bool twisting, dissipation;
+  int history_offset, ntypes;
+  std::vector<dc_cmd_params> params;
+  std::vector<dc_mindlin_pair> pairs;
+  ContactPatchReader patch;
+};
+
+}
+}
+#endif
+#endif
