@@ -32,6 +32,9 @@ configs=(
   "sj0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9"
   "sh1|$sph|hertz|10000|1|-var cdf 1.0001"
   "sr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12"
+  # tangential: Cattaneo-Mindlin-Deresiewicz against stock tangential history
+  "st|$sph|hertz|10000|1|-var tmodel cmd_tangential"
+  "qt|$sq|hertz_elliptic|15000|1|-var tmodel cmd_tangential"
   "qh|$sq|hertz|15000|1|"
   "qe|$sq|hertz_elliptic|15000|1|"
   "q2|$sq|hertz_elliptic|15000|2|"
@@ -57,9 +60,10 @@ for r in $(seq "$reps"); do
 done
 t_sh=${best[sh]} t_se=${best[se]} t_sr=${best[sr]} t_sj=${best[sj]} t_sh5=${best[sh5]} t_se2=${best[se2]}
 t_sj0=${best[sj0]} t_sh1=${best[sh1]} t_sr0=${best[sr0]} t_qh=${best[qh]} t_qe=${best[qe]} t_q2=${best[q2]}
-python3 - "$t_sh" "$t_se" "$t_qh" "$t_qe" "$t_q2" "$t_sr" "$t_sj" "$t_sh5" "$t_se2" "$t_sj0" "$t_sh1" "$t_sr0" <<'PY'
+t_st=${best[st]} t_qt=${best[qt]}
+python3 - "$t_sh" "$t_se" "$t_qh" "$t_qe" "$t_q2" "$t_sr" "$t_sj" "$t_sh5" "$t_se2" "$t_sj0" "$t_sh1" "$t_sr0" "$t_st" "$t_qt" <<'PY'
 import sys
-sh, se, qh, qe, q2, sr, sj, sh5, se2, sj0, sh1, sr0 = map(float, sys.argv[1:])
+sh, se, qh, qe, q2, sr, sj, sh5, se2, sj0, sh1, sr0, st, qt = map(float, sys.argv[1:])
 print("scene (best of runs, loop time)                     stock hertz  hertz_elliptic  ratio")
 print("2888 spheres settling, 10000 steps, 1 rank          %9.3f s   %9.3f s     %.4f" % (sh, se, se / sh))
 print("324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh))
@@ -71,6 +75,8 @@ print("2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_ellipti
 print("    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
       "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2))
 print("324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2))
+print("2888 spheres, hertz: tangential cmd_tangential %.3f s = %.4f x tangential history" % (st, st / sh))
+print("324 superquadrics, hertz_elliptic: tangential cmd_tangential %.3f s = %.4f x tangential history" % (qt, qt / qe))
 PY
 if [ -n "$base" ]; then
   echo
