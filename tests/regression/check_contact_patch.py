@@ -30,7 +30,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, ellipke, run, start
+from regress import ROOT, ellipke, jkr_sphere, run, start
 
 work, _, c = start()
 DIR = os.path.join(ROOT, "inputs", "contact_patch")
@@ -90,20 +90,6 @@ def worst_rel(pairs):
     return max(abs(g - w_) for g, w_ in pairs) / scale
 
 
-def jkr_sphere(R, delta):
-    """Classical JKR, stable branch: (a, F) at overlap delta (None: apart)."""
-    dl = lambda a: a * a / R - math.sqrt(2 * math.pi * w * a / Estar)
-    a_b = (math.pi * w * R * R / (8 * Estar)) ** (1.0 / 3.0)
-    if delta < dl(a_b):
-        return None
-    lo, hi = a_b, a_b + math.sqrt(R * max(delta, 0.0)) + 1e-3
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if dl(mid) < delta else (lo, mid)
-    a = 0.5 * (lo + hi)
-    return a, 4 * Estar * a ** 3 / (3 * R) - math.sqrt(8 * math.pi * w * Estar * a ** 3)
-
-
 def elliptic(R1, R2, delta):
     """Elliptic Hertz (review Eqs. 1-14, Johnson 4.2) independently of
     c_core: e^2 by bisection on Eq. 13, semi-axes a^2 = 2 R_major delta D/K,
@@ -156,7 +142,7 @@ for kind, R in Rs.items():
     c.true(len(tension) > 5 and min(d for d, p in rs) >= d_break - 1e-12,
            "spheres %s, jkr_elliptic: %d formed rows in tension, none below delta_break = %.4g m"
            % (kind, len(tension), d_break))
-    ref = [(d, p, jkr_sphere(R, d)) for d, p in rs]
+    ref = [(d, p, jkr_sphere(R, Estar, w, d)) for d, p in rs]
     c.true(all(x is not None for d, p, x in ref), "spheres %s, jkr_elliptic: every formed row on the JKR branch" % kind)
     ref = [(d, p, x) for d, p, x in ref if x is not None]
     wa = worst_rel([(p["a"], x[0]) for d, p, x in ref])

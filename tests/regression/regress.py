@@ -169,6 +169,23 @@ def elliptic_hertz(R1, R2):
     return Rc, math.pi * math.sqrt(2.0) * math.sqrt(E) / (2.0 * K ** 1.5 * math.sqrt(1.0 - m))
 
 
+def jkr_sphere(R, Estar, w, delta):
+    """Classical JKR (Johnson, Kendall & Roberts 1971) on the stable branch:
+    (contact radius a, force F) at overlap delta, by bisection on
+    delta(a) = a^2/R - (2 pi w a/E*)^1/2 above its minimum; None below the
+    separation overlap."""
+    dl = lambda a: a * a / R - math.sqrt(2 * math.pi * w * a / Estar)
+    a_b = (math.pi * w * R * R / (8 * Estar)) ** (1.0 / 3.0)
+    if delta < dl(a_b):
+        return None
+    lo, hi = a_b, a_b + math.sqrt(R * max(delta, 0.0)) + 1e-3
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if dl(mid) < delta else (lo, mid)
+    a = 0.5 * (lo + hi)
+    return a, 4 * Estar * a ** 3 / (3 * R) - math.sqrt(8 * math.pi * w * Estar * a ** 3)
+
+
 def relative_radii(k1I, k2I, k1II, k2II, w):
     """Relative principal radii from the principal curvatures of two bodies
     whose principal directions make the angle w (review Eqs. 3-4)."""

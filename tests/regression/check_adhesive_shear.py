@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Regression (issue deck e): an adhesive sphere pair (jkr_elliptic) held in
+tension (overlap -0.4 um, the neck formed) and sheared (inputs/adhesive_shear):
+- with `tangential cmd_tangential` friction acts while the contact is
+  formed: the tangential force (the force on atom 1 less its component
+  along the centre line) grows and slides at mu (F + 3 pi w R*), F the
+  classical JKR force at the held overlap (evaluated here by bisection);
+- the normal force stays the JKR force;
+- stock `tangential history` gives no friction in tension (its contact
+  ends when the surfaces part);
+- the cmd_tangential run against its committed reference.
+Usage: check_adhesive_shear.py WORKDIR [--update]"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from regress import ROOT, compare_tables, jkr_sphere, run, save_reference, start, subsample, table
+
+work, update, c = start()
+E, nu, mu, w, R, d1 = 5e6, 0.3, 0.5, 0.05, 0.5e-3, -4e-7
+Estar = 1.0 / (2 * (1 - nu ** 2) / E)
+a1, F1 = jkr_sphere(R, Estar, w, d1)
+F_slide = mu * (F1 + 3 * math.pi * w * R)
+EVERY = 20
+
+
+def split(r):
+    """(normal force on 1 along 2 -> 1 as repulsion, tangential magnitude)."""
+    dist = math.hypot(r[1], r[2])
+    ex, ey = -r[1] / dist, -r[2] / dist          # unit vector from 2 to 1
+    fn = r[3] * ex + r[4] * ey
+    return fn, math.hypot(r[3] - fn * ex, r[4] - fn * ey)
+
+
+runs = {}
+for tmodel in ("cmd_tangential", "history"):
+    d = os.path.join(work, tmodel)
+    run("adhesive_shear/in.adhesive_shear", d, variables={"tmodel": tmodel}, tag=tmodel)
+    runs[tmodel] = [r for r in table(os.path.join(d, "shear.txt")) if r[2] > 0]
+rows = runs["cmd_tangential"]
+fn0, ft0 = split(rows[0])
+c.rel(fn0, F1, 1e-6, "normal force in tension = classical JKR at the held overlap")
+c.true(F1 < 0, "the neck is in tension (F = %.6g N)" % F1)
+# the overlap drifts with the shear (r grows as the offset does): the
+# sliding force at each row's own overlap
+worst = 0.0
+for r in rows[len(rows) // 2:]:
+    fn, ft = split(r)
+    F = jkr_sphere(R, Estar, w, 0.002 - math.hypot(r[1], r[2]))[1]
+    worst = max(worst, abs(ft / (mu * (F + 3 * math.pi * w * R)) - 1))
+c.true(worst < 1e-6, "sliding in tension at mu (F + 3 pi w R*) (%.6g N at the held overlap): worst %.3g (tol 1e-6)"
+       % (F_slide, worst))
+c.true(max(split(r)[1] for r in runs["history"]) < 1e-3 * F_slide,
+       "stock tangential history: no friction in tension (max %.3g N)" % max(split(r)[1] for r in runs["history"]))
+ref = os.path.join(ROOT, "inputs", "adhesive_shear", "reference", "shear.txt")
+if update:
+    save_reference(os.path.join(work, "cmd_tangential", "shear.txt"), ref, EVERY)
+full = table(os.path.join(work, "cmd_tangential", "shear.txt"))
+compare_tables(c, subsample(full, EVERY), table(ref), 1e-9, "vs reference")
+c.finish()
