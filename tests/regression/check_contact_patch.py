@@ -30,7 +30,7 @@ import shutil
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, ellipke, jkr_sphere, run, start
+from regress import ROOT, elliptic_contact, jkr_sphere, run, start
 
 work, _, c = start()
 DIR = os.path.join(ROOT, "inputs", "contact_patch")
@@ -88,26 +88,6 @@ def worst_rel(pairs):
     """max |got - want| / max |want| over (got, want) pairs."""
     scale = max(abs(w_) for g, w_ in pairs) or 1.0
     return max(abs(g - w_) for g, w_ in pairs) / scale
-
-
-def elliptic(R1, R2, delta):
-    """Elliptic Hertz (review Eqs. 1-14, Johnson 4.2) independently of
-    c_core: e^2 by bisection on Eq. 13, semi-axes a^2 = 2 R_major delta D/K,
-    b = a (1 - e^2)^1/2, force 4/3 E* (Rc delta)^1/2 delta gamma."""
-    Rmaj, Rmin = max(R1, R2), min(R1, R2)
-    r = Rmin / Rmaj
-    f = lambda m: m - (1.0 - r * ellipke(m)[1] / ((1.0 + r) * ellipke(m)[0] - ellipke(m)[1]))
-    lo, hi = 1e-12, 1.0 - 1e-16
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
-    m = 0.5 * (lo + hi)
-    K, E = ellipke(m)
-    D = (K - E) / m
-    a = math.sqrt(2 * Rmaj * delta * D / K)
-    gamma = math.pi * math.sqrt(2.0) * math.sqrt(E) / (2.0 * K ** 1.5 * math.sqrt(1.0 - m))
-    Rc = Rmaj * Rmin / (Rmaj + Rmin)
-    return a, a * math.sqrt(1.0 - m), 4.0 / 3.0 * Estar * math.sqrt(Rc * delta) * delta * gamma
 
 
 def same(x, y, what):
@@ -188,7 +168,7 @@ geo = {"wall": (a1 * a1 / c1, b1 * b1 / c1, (1.0, 0.0, 0.0)),
 sq = patch_run("superquadric", "sq_hertz", "hertz_elliptic")
 for kind, (R1, R2, axis) in geo.items():
     touching = [(d, p) for d, p in rows(sq, kind, 2e-6) if d > 1e-8]
-    ref = [(p, elliptic(R1, R2, d)) for d, p in touching]
+    ref = [(p, elliptic_contact(R1, R2, Estar, d)) for d, p in touching]
     wa = worst_rel([(p["a"], x[0]) for p, x in ref] + [(p["b"], x[1]) for p, x in ref])
     wf = worst_rel([(p["F"], x[2]) for p, x in ref])
     c.true(len(ref) > 50 and wa < 1e-9 and wf < 1e-9,

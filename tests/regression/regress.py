@@ -186,6 +186,27 @@ def jkr_sphere(R, Estar, w, delta):
     return a, 4 * Estar * a ** 3 / (3 * R) - math.sqrt(8 * math.pi * w * Estar * a ** 3)
 
 
+def elliptic_contact(R1, R2, Estar, delta):
+    """Elliptic Hertz (review Eqs. 1-14, Johnson 4.2) independently of
+    c_core: e^2 by bisection on Eq. 13, semi-axes a^2 = 2 R_major delta D/K,
+    b = a (1 - e^2)^1/2, force 4/3 E* (Rc delta)^1/2 delta gamma; returns
+    (a, b, F)."""
+    Rmaj, Rmin = max(R1, R2), min(R1, R2)
+    r = Rmin / Rmaj
+    f = lambda m: m - (1.0 - r * ellipke(m)[1] / ((1.0 + r) * ellipke(m)[0] - ellipke(m)[1]))
+    lo, hi = 1e-12, 1.0 - 1e-16
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < 0.0 else (lo, mid)
+    m = 0.5 * (lo + hi)
+    K, E = ellipke(m)
+    D = (K - E) / m
+    a = math.sqrt(2 * Rmaj * delta * D / K)
+    gamma = math.pi * math.sqrt(2.0) * math.sqrt(E) / (2.0 * K ** 1.5 * math.sqrt(1.0 - m))
+    Rc = Rmaj * Rmin / (Rmaj + Rmin)
+    return a, a * math.sqrt(1.0 - m), 4.0 / 3.0 * Estar * math.sqrt(Rc * delta) * delta * gamma
+
+
 def relative_radii(k1I, k2I, k1II, k2II, w):
     """Relative principal radii from the principal curvatures of two bodies
     whose principal directions make the angle w (review Eqs. 3-4)."""
