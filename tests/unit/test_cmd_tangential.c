@@ -1,0 +1,281 @@
+/* Cattaneo-Mindlin-Deresiewicz law (dc/cmd_tangential.h) against the
+   closed forms of Mindlin and Deresiewicz and the independent references of
+   tests/reference/gen_cmd_tangential.py (cmd_tangential.csv). Prints the
+   loop-energy error against the step size and ns per step. */
+#include "check.h"
+#include "dc/cmd_tangential.h"
+#include "dc/elliptic_integrals.h"
+#include "dc/status.h"
+#include <float.h>
+#include <time.h>
+
+static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static double norm3(const double *a) { return sqrt(dot3(a, a)); }
+static void cross3(const double *a, const double *b, double *c)
+{
+  c[0] = a[1] * b[2] - a[2] * b[1];
+  c[1] = a[2] * b[0] - a[0] * b[2];
+  c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* a tilted frame: normal n, major axis e1, minor axis e2 (right-handed) */
+static const double N0[3] = {0.48, -0.6, 0.64};
+static void frame(double n[3], double e1[3], double e2[3])
+{
+  for (int k = 0; k < 3; k++) n[k] = N0[k];
+  const double t[3] = {0.8, 0.64, 0.0};   /* normal to N0 */
+  for (int k = 0; k < 3; k++) e1[k] = t[k] / sqrt(1.0496);
+  cross3(n, e1, e2);
+}
+
+static dc_patch patch_of(double a, double b, const double *axis, double Fb)
+{
+  dc_patch p;
+  p.a = a;
+  p.b = b;
+  for (int k = 0; k < 3; k++) p.axis[k] = a > b ? axis[k] : 0.0;
+  p.F_elastic = Fb;
+  p.F_bound = Fb;
+  p.formed = 1.0;
+  return p;
+}
+
+/* one step along the unit direction e by ds (plus a normal part that the
+   law must ignore) */
+static int step_along(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *pa, const double *n,
+                      const double *e, double ds, dc_cmd_state *h, dc_cmd_out *o)
+{
+  double du[3];
+  for (int k = 0; k < 3; k++) du[k] = ds * e[k] + 0.37 * ds * n[k];
+  return dc_cmd_step(p, m, pa, n, du, 0.0, 1e-6, h, o);
+}
+
+/* ------------------------------------------------------------------ */
+/* The circle at constant F_n, F_t cycled between +-F*: the whole loop
+   (Eq. 59 loading, Eq. 67 unloading and reloading) and the energy per
+   cycle (Eq. 69) against the closed forms (loop and energy rows). */
+static void test_circle_loop(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  /* pair: one body G = 1, nu = 0.3 on a rigid one; a with k0 = 1; mu F_n = 1 */
+  const double nu = 0.3;
+  const dc_mindlin_pair m = {1.0, nu};
+  const double a = (2.0 - nu) / 8.0;
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = patch_of(a, a, e1, 2.0);
+  const double dL = 1.5;   /* 3 mu F_n / (2 k0) */
+  char tag[16];
+  double v[8];
+  int rows = 0, erows = 0;
+  printf("loop energy (Eq. 69), trapezoid error vs steps per half cycle:\n");
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
+    if (!strcmp(tag, "loop")) {
+      /* the point x of the loop for r = v[0]: drive to it along each branch */
+      const double r = v[0], x = v[1], ds = dL * (1.0 - cbrt((1.0 - r) * (1.0 - r)));
+      dc_cmd_state h;
+      dc_cmd_out o;
+      memset(&h, 0, sizeof h);
+      const int N = 64;
+      double d = 0.0;
+      int ok = 1;
+      if (x >= 0.0) {   /* virgin branch up to x */
+        for (int i = 0; i < N; i++) { ok &= step_along(&p, &m, &pa, n, e2, x / N, &h, &o) == DC_OK; d += x / N; }
+        CHECK_REL(dot3(o.Ft, e2), v[2], 1e-13, "virgin branch (Eq. 59)");
+        for (int i = 0; i < N; i++) ok &= step_along(&p, &m, &pa, n, e2, (ds - x) / N, &h, &o) == DC_OK;
+      } else {
+        for (int i = 0; i < N; i++) ok &= step_along(&p, &m, &pa, n, e2, ds / N, &h, &o) == DC_OK;
+      }
+      CHECK_REL(dot3(o.Ft, e2), r, 1e-13, "turning point F*");
+      /* unloading to x, on to -ds, reloading to x */
+      for (int i = 0; i < N; i++) ok &= step_along(&p, &m, &pa, n, e2, -(ds - x) / N, &h, &o) == DC_OK;
+      CHECK_ABS(dot3(o.Ft, e2), v[3], 2e-14, "unloading branch (Eq. 67)");
+      for (int i = 0; i < N; i++) ok &= step_along(&p, &m, &pa, n, e2, -(x + ds) / N, &h, &o) == DC_OK;
+      CHECK_REL(dot3(o.Ft, e2), -r, 1e-13, "turning point -F*");
+      for (int i = 0; i < N; i++) ok &= step_along(&p, &m, &pa, n, e2, (x + ds) / N, &h, &o) == DC_OK;
+      CHECK_ABS(dot3(o.Ft, e2), v[4], 2e-14, "reloading branch");
+      CHECK(ok);
+      CHECK(fabs(dot3(o.Ft, n)) < 1e-15 && fabs(dot3(o.Ft, e1)) < 1e-15);
+      rows++;
+    } else if (!strcmp(tag, "energy")) {
+      const double r = v[0], E69 = v[1], ds = dL * (1.0 - cbrt((1.0 - r) * (1.0 - r)));
+      CHECK_REL(v[2], E69, 1e-24, "Eq. 69 = quadrature of the loop (generator)");
+      double err = 0.0, err_prev = 0.0;
+      printf("  F*/mu F_n = %.2f:", r);
+      for (int N = 10; N <= 100000; N *= 10) {
+        dc_cmd_state h;
+        dc_cmd_out o;
+        memset(&h, 0, sizeof h);
+        for (int i = 0; i < N; i++) step_along(&p, &m, &pa, n, e1, ds / N, &h, &o);
+        /* one cycle: +ds -> -ds -> +ds; E = closed integral of F d(delta) (trapezoid) */
+        double E = 0.0, F0 = dot3(o.Ft, e1), Fmax = 0.0;
+        for (int sgn = -1; sgn <= 1; sgn += 2)
+          for (int i = 0; i < 2 * N; i++) {
+            step_along(&p, &m, &pa, n, e1, sgn * ds / N, &h, &o);
+            const double F1 = dot3(o.Ft, e1);
+            E += 0.5 * (F0 + F1) * sgn * ds / N;
+            F0 = F1;
+            Fmax = fmax(Fmax, fabs(F1));
+          }
+        err_prev = err;
+        err = fabs(E - E69) / E69;
+        printf("  N %6d: %.2e", N, err);
+        if (N == 100 && r == 0.8) CHECK(err < 1e-4);
+        CHECK(Fmax <= r * (1.0 + 1e-10));   /* the sum of N steps ds/N drifts by rounding */
+      }
+      printf("  (order %.2f)\n", log10(err_prev / err));
+      CHECK(err < 1e-9);
+      erows++;
+    }
+  }
+  fclose(f);
+  CHECK(rows == 36 && erows == 4);
+}
+
+/* ------------------------------------------------------------------ */
+/* Ellipse, no slip: stiffness |F|/|delta| and the angle psi between the
+   displacement and the major axis, 12 force directions (noslip rows,
+   Cerruti quadrature); the tangent stiffness along du. */
+static void test_ellipse_noslip(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  char tag[16];
+  double v[8];
+  int rows = 0;
+  double worst_k = 0.0, worst_a = 0.0;
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
+    if (strcmp(tag, "noslip")) continue;
+    const double g = v[0], nu = v[1], th = v[2], k = v[3], psi = v[4];
+    const dc_mindlin_pair m = {1.0, nu};
+    dc_cmd_params p = {1e6, 0.0, 0, 0};   /* slip negligible at delta = 1e-9 */
+    const dc_patch pa = patch_of(1.0, g, e1, 1.0);
+    double e[3];
+    for (int i = 0; i < 3; i++) e[i] = cos(psi) * e1[i] + sin(psi) * e2[i];
+    dc_cmd_state h;
+    dc_cmd_out o;
+    memset(&h, 0, sizeof h);
+    const double d = 1e-9;
+    CHECK(step_along(&p, &m, &pa, n, e, d, &h, &o) == DC_OK);
+    const double F = norm3(o.Ft), ang = atan2(dot3(o.Ft, e2), dot3(o.Ft, e1));
+    worst_k = fmax(worst_k, fabs(F / d - k) / k);
+    worst_a = fmax(worst_a, fabs(ang - th));
+    CHECK_REL(F / d, k, 1e-13, "no-slip stiffness along the force (Eqs. 56-57)");
+    CHECK_ABS(ang, th, 1e-13, "force angle theta for displacement angle psi (Eq. 58)");
+    CHECK_REL(o.kt, dot3(o.Ft, e) / d, 1e-12, "tangent stiffness along du");
+    CHECK(fabs(dot3(o.Ft, n)) < 1e-20);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 144);
+  printf("ellipse no-slip, 144 rows: stiffness error %.1e, force angle error %.1e rad\n", worst_k, worst_a);
+}
+
+/* Micro-slip on the ellipse (micro rows: Eqs. 60-61 on the axes, Eq. 59
+   at theta = pi/4), force direction fixed at theta. */
+static void test_ellipse_microslip(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  char tag[16];
+  double v[8];
+  int rows = 0;
+  double worst = 0.0;
+  dc_cmd_state h;
+  dc_cmd_out o;
+  double dprev = 0.0, key[3] = {-1, -1, -1};
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
+    if (strcmp(tag, "micro")) continue;
+    const double g = v[0], nu = v[1], th = v[2], psi = v[3], F = v[5], d = v[6];
+    const dc_mindlin_pair m = {1.0, nu};
+    dc_cmd_params p = {0.5, 0.0, 0, 0};
+    const dc_patch pa = patch_of(1.0, g, e1, 2.0);
+    if (key[0] != g || key[1] != nu || key[2] != th) {   /* a new curve: fresh contact */
+      memset(&h, 0, sizeof h);
+      dprev = 0.0;
+      key[0] = g; key[1] = nu; key[2] = th;
+    }
+    double e[3];
+    for (int i = 0; i < 3; i++) e[i] = cos(psi) * e1[i] + sin(psi) * e2[i];
+    for (int i = 0; i < 16; i++) CHECK(step_along(&p, &m, &pa, n, e, (d - dprev) / 16, &h, &o) == DC_OK);
+    dprev = d;
+    const double Fl = norm3(o.Ft), ang = atan2(dot3(o.Ft, e2), dot3(o.Ft, e1));
+    worst = fmax(worst, fabs(Fl - F));
+    CHECK_ABS(Fl, F, 1e-13, "micro-slip force (Eqs. 59-61)");
+    CHECK_ABS(ang, th, 1e-12, "micro-slip force direction");
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 72);
+  printf("ellipse micro-slip, 72 rows (theta = 0, pi/2: Eqs. 60-61; pi/4: Eq. 59): max error %.1e mu F_n\n", worst);
+}
+
+/* Twisting: stiffness against the quadrature and Eq. 77, the full-slip
+   moment, the first-loading curve, and the circle's 16 G a^3/3 and
+   3 pi mu F a/16 (twist rows). */
+static void test_twist(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  char tag[16];
+  double v[8];
+  int rows = 0;
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
+    if (strcmp(tag, "twist")) continue;
+    const double g = v[0], nu = v[1];
+    const dc_mindlin_pair m = {1.0, nu};
+    double k, Ms;
+    CHECK(dc_cmd_twist_stiffness(&m, 1.0, g, &k) == DC_OK);
+    CHECK_REL(k, v[2], 2e-14, "torsional stiffness vs Cerruti quadrature");
+    CHECK_REL(k, v[3], 2e-14, "torsional stiffness vs review Eq. 77");
+    CHECK(dc_cmd_twist_slip_moment(0.4, 2.5, 1.0, g, &Ms) == DC_OK);
+    CHECK_REL(Ms, v[4], 2e-15, "full-slip moment");
+    if (g == 1.0) {
+      CHECK_REL(k, 16.0 / 3.0, 1e-15, "circle: 16 G a^3 / 3");
+      CHECK_REL(Ms, 3.0 * M_PI / 16.0, 1e-15, "circle: 3 pi mu F a / 16");
+    }
+    /* the law: first loading M = Ms [1 - (1 - 2 k phi/(3 Ms))^3/2], then full slip */
+    dc_cmd_params p = {0.4, 0.0, 0, 1};
+    const dc_patch pa = patch_of(1.0, g, e1, 2.5);
+    dc_cmd_state h;
+    dc_cmd_out o;
+    memset(&h, 0, sizeof h);
+    const double phis = 1.5 * Ms / k, zero[3] = {0, 0, 0};
+    double phi = 0.0;
+    CHECK(dc_cmd_step(&p, &m, &pa, n, zero, 1e-12 * phis, 1e-6, &h, &o) == DC_OK);
+    CHECK_REL(o.Mt, k * 1e-12 * phis, 1e-11, "no-slip torsional stiffness in the step");
+    CHECK_REL(o.kr, k, 1e-11, "torsional tangent stiffness at the start");
+    phi = 1e-12 * phis;
+    for (int i = 1; i <= 32; i++) {
+      const double to = phis * i / 32.0;
+      CHECK(dc_cmd_step(&p, &m, &pa, n, zero, to - phi, 1e-6, &h, &o) == DC_OK);
+      phi = to;
+      CHECK_ABS(o.Mt, Ms * (1.0 - pow(1.0 - phi / phis, 1.5)), 1e-14 * Ms, "twisting, first loading");
+    }
+    CHECK(dc_cmd_step(&p, &m, &pa, n, zero, 3.0 * phis, 1e-6, &h, &o) == DC_OK);
+    CHECK(o.Mt == Ms && o.kr == 0.0);
+    CHECK(dc_cmd_step(&p, &m, &pa, n, zero, -0.5 * phis, 1e-6, &h, &o) == DC_OK);
+    CHECK_ABS(o.Mt, Ms - 2.0 * Ms * (1.0 - pow(1.0 - 0.25, 1.5)), 1e-14 * Ms, "twisting, unloading (Masing)");
+    CHECK(o.Ft[0] == 0.0 && o.Ft[1] == 0.0 && o.Ft[2] == 0.0);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 15);
+}
+
+int main(void)
+{
+  test_circle_loop();
+  test_ellipse_noslip();
+  test_ellipse_microslip();
+  test_twist();
+  return check_summary("test_cmd_tangential");
+}
