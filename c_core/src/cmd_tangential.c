@@ -311,9 +311,11 @@ static inline void moments(double x0, double x1, double *J1, double *J2)
   *J2 = h * (h * h / 5.0 + x0 * h + 4.0 / 3.0 * x0 * x0) / (d * d);
 }
 
-/* Least-squares fit of pieces i, i+1 by one piece (linear in xi^2) over
-   their union: the projection on {1, phi} keeps int u dxi (the force) and
-   int u xi^2 dxi. Returns the squared L2 change; the fit in *f. */
+/* One piece (linear in xi^2) in place of pieces i, i+1: it keeps their
+   force int u dxi and their value at the outer end (where the limit is
+   least, so that a merge does not make the rim slip), u = c0 + c1 phi,
+   phi = (xi^2 - xa^2)/(xb^2 - xa^2). Returns the squared L2 change; the
+   piece in *f. */
 static double merge_fit(int dim, const piece *pc, int i, piece *f)
 {
   const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
@@ -336,25 +338,20 @@ static double merge_fit(int dim, const piece *pc, int i, piece *f)
       e2 += p->v0[k] * p->v0[k] * J0 + 2.0 * p->v0[k] * dv * J1 + dv * dv * J2;
     }
   }
-  const double det = g00 * g11 - g01 * g01;
-  double proj = 0.0;
+  const double w = g00 - g01;   /* int (1 - phi) > 0 */
+  double cross = 0.0, self = 0.0;
   f->x0 = xa;
   f->x1 = xb;
   f->slip = 0;
   for (int k = 0; k < dim; k++) {
-    double c0, c1;
-    if (det > 0.0) {
-      c0 = (g11 * m0[k] - g01 * m1[k]) / det;
-      c1 = (g00 * m1[k] - g01 * m0[k]) / det;
-    } else {
-      c0 = g00 > 0.0 ? m0[k] / g00 : 0.5 * (pc[i].v0[k] + pc[i + 1].v1[k]);
-      c1 = 0.0;
-    }
+    const double vb = pc[i + 1].v1[k];
+    const double c0 = w > 0.0 ? (m0[k] - vb * g01) / w : vb, c1 = vb - c0;
     f->v0[k] = c0;
-    f->v1[k] = c0 + c1;
-    proj += c0 * m0[k] + c1 * m1[k];
+    f->v1[k] = vb;
+    cross += c0 * m0[k] + c1 * m1[k];
+    self += c0 * c0 * g00 + 2.0 * c0 * c1 * g01 + c1 * c1 * g11;
   }
-  return e2 - proj;
+  return e2 - 2.0 * cross + self;
 }
 
 /* Merges the cheapest neighbours until at most DC_CMD_MAX_SEG remain. */

@@ -20,6 +20,13 @@ loop, r, x, F_virgin, F_unload, F_reload
     Mindlin-Deresiewicz for the circle (k0 = 1, mu F_n = 1, r = F*/mu F_n):
     first loading (Eq. 59), unloading from F* (Eq. 67) and reloading from
     -F* at delta = x (inside [-delta*, delta*]).
+nested, delta, F
+    Nested reversals at constant F_n (k0 = 1, mu F_n = 1): Masing's rules
+    with memory on a stack of turning points (virgin curve Eq. 59, branches
+    F_r + 2 psi((delta - delta_r)/2), a branch that reaches the turning point
+    before last continues on the earlier branch; the first branch rejoins
+    the virgin curve at the mirror point), along legs through 0, 1.0, 0.2,
+    0.8, 0.4, 0.9, 1.2, -0.5, 0.3, -2, 0 (4 points per leg).
 energy, r, E_eq69, E_quad
     Energy per cycle k0 E_d / (mu F_n)^2: review Eq. 69 in pair form, and
     the area of the loop of Eq. 67 by quadrature (they agree to 1e-30).
@@ -32,6 +39,33 @@ twist, b/a, nu, k, k_eq77, Ms
     of the Hertz pressure. That this traction turns the whole contact
     rigidly (not only at the centre) is checked at one off-centre point by
     a 2D quadrature (b/a = 0.5, nu = 0.3; to 1e-9).
+
+Varying normal force (circle, Hertz: a = (N/N0)^1/3, k0 = a, mu = 1/2,
+N0 = 2, so mu N0 = 1; C0 = 1/k0 at the current radius):
+eq70, delta, N, T
+    Review Eq. 70 (slip branch) from (N0, 0) with N = N0 + delta
+    (mu dN/d delta = 1/2 < k0): dT = theta k0 d delta + mu dN (1 - theta),
+    theta^3 = 1 - T/(mu N), integrated by mpmath's odefun.
+eq70ns, delta, N, T
+    Eq. 70, no slip (N = N0 + 4 delta: mu dN > k0 d delta): T = int k0 d delta.
+eq71, delta, N, T
+    First loading at N0 to T* = 0.6, then delta decreases while
+    N = N0 + (delta* - delta): Eq. 71 corrected (header of
+    dc/cmd_tangential.h): dT = theta k0 d delta - mu dN (1 - theta),
+    theta^3 = 1 - (T* + mu (N - N0) - T)/(2 mu N).
+eq71ns, delta, N, T
+    The same with N = N0 + 4 (delta* - delta): no slip, dT = k0 d delta.
+oblique, phase, T, delta
+    Force-controlled oscillation (Eqs. 72-74), Theta = mu/Xi = 1/2,
+    Lambda* = 1/2, N = N0 + T/Xi: delta(T) = int S dT on the phases
+    0 OP (Eq. 72), 1 PRY (Eq. 73, first line), 2 YS (Eq. 73 second line,
+    corrected), 3 SUV (Eq. 74), 4 VWS (Eq. 74 with Theta, Lambda reversed).
+energy75, Theta, Lambda*, E
+    Energy per stabilised cycle, Eq. 75 (pair form, 36/5 (mu N0)^2 / k0(N0)),
+    equal to the area of the SUVWS loop by quadrature (checked here).
+Eqs. 70-74 (as corrected) are checked here against an independent
+brute-force simulation of the spring bed (3000 springs, force control by
+bisection), to 1e-6.
 Run: python3 gen_cmd_tangential.py  (writes cmd_tangential.csv beside it)
 """
 import os
@@ -118,6 +152,49 @@ for r in ("0.2", "0.5", "0.8", "0.95"):
     emit("energy", r, E69, Eq)
 
 
+# ---- nested reversals: Masing with memory (k0 = 1, mu F_n = 1, delta_L = 3/2)
+def vpsi(d):   # virgin curve, odd, full slip beyond delta_L
+    x = min(abs(d) / dL, mp.mpf(1))
+    return mp.sign(d) * (1 - (1 - x) ** mp.mpf(1.5))
+
+
+class Masing:
+    def __init__(self):
+        self.tp, self.d, self.s = [], mp.mpf(0), 0
+
+    def force(self, d):
+        if not self.tp:
+            return vpsi(d)
+        dr, Fr = self.tp[-1]
+        return Fr + 2 * vpsi((d - dr) / 2)
+
+    def move(self, d):
+        s = mp.sign(d - self.d)
+        if s == 0:
+            return self.force(d)
+        if self.s != 0 and s != self.s:
+            self.tp.append((self.d, self.force(self.d)))    # a reversal
+        self.s = s
+        while True:
+            if len(self.tp) >= 2 and s * (d - self.tp[-2][0]) >= 0:
+                self.tp = self.tp[:-2]                      # memory: back on the earlier branch
+            elif len(self.tp) == 1 and s * (d + self.tp[0][0]) >= 0 and s * self.tp[0][0] < 0:
+                self.tp = []                                # back on the virgin curve
+            else:
+                break
+        self.d = d
+        return self.force(d)
+
+
+M = Masing()
+legs = [0, 1.0, 0.2, 0.8, 0.4, 0.9, 1.2, -0.5, 0.3, -2, 0]
+for i in range(1, len(legs)):
+    a0, a1 = mp.mpf(str(legs[i - 1])), mp.mpf(str(legs[i]))
+    for j in range(1, 5):
+        d = a0 + (a1 - a0) * j / 4
+        emit("nested", d, M.move(d))
+
+
 # ---- twisting: no-slip stiffness by quadrature, Eq. 77, full-slip moment
 def twist(g, nu):
     # d u_x/d y and d u_y/d x at the centre per unit P and Q (G = 1):
@@ -190,6 +267,124 @@ for g in ("1", "0.7", "0.5", "0.2", "0.05"):
         Ms = 3 / (2 * mp.pi) * mp.quad(lambda t: mp.sqrt(1 - t * t) * t * t, [0, 1]) * \
             mp.quad(lambda p: mp.sqrt(mp.cos(p) ** 2 + gg * gg * mp.sin(p) ** 2), [0, mp.pi / 2, mp.pi, 3 * mp.pi / 2, 2 * mp.pi])
         emit("twist", g, nu, k, 2 / Ct, Ms)
+
+
+
+# ---- varying normal force (circle, Hertz)
+MU, NZ = mp.mpf(1) / 2, mp.mpf(2)
+aN = lambda N: (N / NZ) ** (mp.mpf(1) / 3)    # contact radius, k0 = a
+
+
+def ode(f, x0, y0, xs):
+    sol = mp.odefun(f, x0, y0)
+    return [sol(x) for x in xs]
+
+
+# Eq. 70, slip (g = 1) and no slip (g = 4)
+xs = [mp.mpf(j) / 10 for j in range(1, 13)]
+f70 = lambda d, T: mp.cbrt(1 - T / (MU * (NZ + d))) * aN(NZ + d) + MU * (1 - mp.cbrt(1 - T / (MU * (NZ + d))))
+for d, T in zip(xs, ode(f70, mp.mpf(0), mp.mpf(0), xs)):
+    emit("eq70", d, NZ + d, T)
+for d in xs:
+    g = 4
+    emit("eq70ns", d, NZ + g * d, 3 * NZ / (4 * g) * ((1 + g * d / NZ) ** (mp.mpf(4) / 3) - 1))
+# Eq. 71 (corrected): virgin to T* = 0.6 at N0 (delta_L = 3/2), then unloading
+Tst = mp.mpf("0.6")
+dst = mp.mpf(3) / 2 * (1 - (1 - Tst) ** (mp.mpf(2) / 3))
+def f71(e, T):   # e = delta* - delta, dT/de
+    N = NZ + e
+    th = mp.cbrt(1 - (Tst + MU * (N - NZ) - T) / (2 * MU * N))
+    return -(th * aN(N) + MU * (1 - th))
+es = [mp.mpf(j) / 10 for j in range(1, 10)]
+for e, T in zip(es, ode(f71, mp.mpf(0), Tst, es)):
+    # the formula holds until the reverse front reaches the first one
+    c = mp.cbrt(1 - Tst / (MU * NZ))
+    th = mp.cbrt(1 - (Tst + MU * e - T) / (2 * MU * (NZ + e)))
+    if th * aN(NZ + e) <= c:
+        sys.exit("eq71 rows past the memory point")
+    emit("eq71", dst - e, NZ + e, T)
+for e in es:
+    g = 4
+    emit("eq71ns", dst - e, NZ + g * e, Tst - 3 * NZ / (4 * g) * ((1 + g * e / NZ) ** (mp.mpf(4) / 3) - 1))
+
+# Eqs. 72-74: Theta = 1/2, Lambda* = 1/2
+TH, LS = mp.mpf(1) / 2, mp.mpf(1) / 2
+XI, TS, UP = MU / TH, LS * MU * NZ, (TH - 1) / (TH + 1)
+C0 = lambda T: 1 / aN(NZ + T / XI)
+Lm = lambda T: T / (MU * NZ)
+third = mp.mpf(1) / 3
+S_OP = lambda T: C0(T) * (TH + (1 - TH) * (1 - Lm(T) / (1 + TH * Lm(T))) ** -third)
+S_PRY = lambda T: C0(T) * (-TH + (1 + TH) * (1 - (1 - TH) * (LS - Lm(T)) / (2 * (1 + TH * Lm(T)))) ** -third)
+S_YS = lambda T: C0(T) * (-TH + (1 + TH) * (1 + Lm(T) / (1 + TH * Lm(T))) ** -third)
+S_SUV = lambda T: C0(T) * (TH + (1 - TH) * (1 - (1 + TH) * (LS + Lm(T)) / (2 * (1 + TH * Lm(T)))) ** -third)
+S_VWS = S_PRY
+phases = [(S_OP, 0, TS), (S_PRY, TS, UP * TS), (S_YS, UP * TS, -TS), (S_SUV, -TS, TS), (S_VWS, TS, -TS)]
+d0 = mp.mpf(0)
+ends = []
+for ph, (S, t0, t1) in enumerate(phases):
+    for j in range(1, 9):
+        T = t0 + (t1 - t0) * j / 8
+        emit("oblique", ph, T, d0 + mp.quad(S, [t0, T]))
+    d0 += mp.quad(S, [t0, t1])
+    ends.append(d0)
+if abs(ends[4] - ends[2]) > mp.mpf(10) ** -25:
+    sys.exit("the stabilised loop does not close")
+E_loop = mp.quad(lambda T: T * (S_SUV(T) - S_VWS(T)), [-TS, TS])
+E75 = mp.mpf(36) / 5 * (MU * NZ) ** 2 * (1 / (4 * TH) * (-(1 / UP) * (1 - TH * LS) ** (mp.mpf(5) / 3) + UP * (1 + TH * LS) ** (mp.mpf(5) / 3))
+                                        - 1 / (1 - TH ** 2) * (1 - LS) ** (mp.mpf(2) / 3) * (1 - (1 + 5 * TH ** 2) / 6 * LS))
+if abs(E_loop - E75) > mp.mpf(10) ** -25 * E75:
+    sys.exit("Eq. 75 is not the area of the stabilised loop")
+emit("energy75", TH, LS, E75)
+
+
+# ---- the formulas against a brute-force spring bed (floats, independent)
+def bed_check():
+    mu, N0, K, amax = 0.5, 2.0, 3000, 2.2
+    dx = amax / K
+    xs = [(i + 0.5) * dx for i in range(K)]
+    lam = 1.5 * mu * N0        # limits lam (a^2 - x^2) integrate to mu N (k0 = a)
+    aof = lambda N: (N / N0) ** (1 / 3)
+    def step(u, dd, N):
+        a2 = aof(N) ** 2
+        for i, x in enumerate(xs):
+            if x * x >= a2:
+                u[i] = 0.0
+                continue
+            v, l = u[i] + dd, lam * (a2 - x * x)
+            u[i] = l if v > l else (-l if v < -l else v)
+    T = lambda u: sum(u) * dx
+    bad = []
+    u = [0.0] * K                                # Eq. 70
+    for i in range(2400):
+        step(u, 1.2 / 2400, N0 + 1.2 * (i + 1) / 2400)
+    bad.append((T(u), float([r for r in rows if r.startswith("eq70,1.2,")][0].split(",")[3])))
+    u = [0.0] * K                                # Eq. 71
+    for i in range(2000):
+        step(u, float(dst) / 2000, N0)
+    for i in range(1800):
+        step(u, -0.9 / 1800, N0 + 0.9 * (i + 1) / 1800)
+    bad.append((T(u), float([r for r in rows if r.startswith("eq71,") and r.split(",")[2].startswith("2.9")][0].split(",")[3])))
+    u, d = [0.0] * K, 0.0                        # Eqs. 72-74, force control
+    def goto(Tt, d):
+        N, lo, hi = N0 + Tt / float(XI), -0.05, 0.05
+        for _ in range(50):
+            mid, c = 0.5 * (lo + hi), u[:]
+            step(c, mid, N)
+            lo, hi = (mid, hi) if T(c) < Tt else (lo, mid)
+        step(u, 0.5 * (lo + hi), N)
+        return d + 0.5 * (lo + hi)
+    n = 100
+    for ph, (S, t0, t1) in enumerate(phases):
+        for i in range(n):
+            d = goto(float(t0 + (t1 - t0) * (i + 1) / n), d)
+        bad.append((d, float(ends[ph])))
+    worst = max(abs(got - want) / max(1.0, abs(want)) for got, want in bad)
+    print("brute-force spring bed vs Eqs. 70-74: %d checks, worst difference %.1e" % (len(bad), worst))
+    if worst > 1e-6:
+        sys.exit("the brute-force spring bed disagrees with Eqs. 70-74")
+
+
+bed_check()
 
 with open(os.path.join(here, "cmd_tangential.csv"), "w") as out:
     out.write("# generated by gen_cmd_tangential.py (mpmath, 40 digits); rows described there\n")

@@ -271,11 +271,283 @@ static void test_twist(void)
   CHECK(rows == 15);
 }
 
+
+/* ------------------------------------------------------------------ */
+/* Nested reversals at constant F_n (nested rows: Masing with memory). */
+static void test_nested(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  const double nu = 0.3;
+  const dc_mindlin_pair m = {1.0, nu};
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);   /* k0 = 1, mu F_n = 1 */
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  char tag[16];
+  double v[4], d = 0.0, worst = 0.0;
+  int rows = 0, maxseg = 0;
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0) {
+    if (strcmp(tag, "nested")) continue;
+    for (int i = 0; i < 10; i++) step_along(&p, &m, &pa, n, e1, (v[0] - d) / 10, &h, &o);
+    d = v[0];
+    worst = fmax(worst, fabs(dot3(o.Ft, e1) - v[1]));
+    CHECK_ABS(dot3(o.Ft, e1), v[1], 1e-14, "nested reversals (Masing with memory)");
+    maxseg = (int)fmax(maxseg, h.nseg);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 40);
+  printf("nested reversals, 40 points: max error %.1e mu F_n, at most %d pieces\n", worst, maxseg);
+}
+
+/* More turning points than DC_CMD_MAX_TURNS: exact while they fit; beyond,
+   the least-change merge forgets the smallest loop (force kept); loading
+   past the largest turning point returns to the virgin curve. */
+static void masing_ref(int ntp, const double *td, const double *tf, double d, double *F)
+{
+  /* branch from the last turning point of the list (virgin if none) */
+  const double dL = 1.5;
+  double x;
+  if (ntp == 0) { x = fmin(fabs(d) / dL, 1.0); *F = copysign(1.0 - pow(1.0 - x, 1.5), d); return; }
+  const double h = 0.5 * (d - td[ntp - 1]);
+  x = fmin(fabs(h) / dL, 1.0);
+  *F = tf[ntp - 1] + 2.0 * copysign(1.0 - pow(1.0 - x, 1.5), h);
+}
+
+/* turning points amp0 * q^t (alternating sign), 12 of them; returns the
+   largest error within the cap and beyond */
+static void turn_sequence(double amp0, double q, double *worst_in, double *worst_out)
+{
+  const double nu = 0.3;
+  const dc_mindlin_pair m = {1.0, nu};
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  enum { NT = 12 };
+  double td[NT], tf[NT], d = 0.0, Fprev = 0.0, jump = 0.0, amp = amp0;
+  int ntp = 0;
+  *worst_in = *worst_out = 0.0;
+  for (int t = 0; t < NT; t++, amp *= q) {
+    const double to = (t % 2 ? -1.0 : 1.0) * amp;
+    for (int i = 0; i < 50; i++) {
+      const double dd = (to - d) / (50 - i);
+      step_along(&p, &m, &pa, n, e1, dd, &h, &o);
+      d += dd;
+      double Fr;
+      masing_ref(ntp, td, tf, d, &Fr);
+      const double e = fabs(dot3(o.Ft, e1) - Fr);
+      if (ntp <= DC_CMD_MAX_TURNS) *worst_in = fmax(*worst_in, e);
+      else *worst_out = fmax(*worst_out, e);
+      jump = fmax(jump, fabs(dot3(o.Ft, e1) - Fprev) / fabs(dd));
+      Fprev = dot3(o.Ft, e1);
+      CHECK(h.nseg <= DC_CMD_MAX_SEG && norm3(o.Ft) <= 1.0 + 1e-12);
+    }
+    td[ntp] = d;
+    masing_ref(ntp, td, tf, d, &tf[ntp]);
+    ntp++;
+  }
+  CHECK(jump <= 1.0 + 1e-9);   /* never stiffer than no slip: the force stays continuous */
+  /* past the largest turning point: the virgin curve again */
+  for (int i = 0; i < 100; i++) {
+    const double dd = (1.4 - d) / (100 - i);
+    step_along(&p, &m, &pa, n, e1, dd, &h, &o);
+    d += dd;
+  }
+  CHECK_ABS(dot3(o.Ft, e1), 1.0 - pow(1.0 - 1.4 / 1.5, 1.5), 1e-13, "virgin curve after the capped loops");
+}
+
+static void test_turn_cap(void)
+{
+  double in, out;
+  turn_sequence(1.2, 0.6, &in, &out);
+  CHECK(in < 1e-14 && out < 1e-3);
+  printf("12 turning points (cap %d), amplitudes 1.2 x 0.6^k: max error %.1e within the cap, %.1e beyond (mu F_n)\n",
+         DC_CMD_MAX_TURNS, in, out);
+  turn_sequence(1.2, 0.92, &in, &out);
+  CHECK(in < 1e-14 && out < 0.05);
+  printf("12 turning points (cap %d), amplitudes 1.2 x 0.92^k: max error %.1e within the cap, %.1e beyond (mu F_n)\n",
+         DC_CMD_MAX_TURNS, in, out);
+}
+
+/* ------------------------------------------------------------------ */
+/* Varying normal force: Eqs. 70-71 (rows eq70, eq70ns, eq71, eq71ns) and
+   the oscillating oblique force of Eqs. 72-75 (oblique, energy75). Circle,
+   Hertz: a = (N/N0)^1/3, k0 = a, mu = 1/2, N0 = 2. */
+static const double VN_N0 = 2.0;
+static dc_mindlin_pair vn_pair(void)
+{
+  const double s0 = 8.0 / 1.7;
+  return (dc_mindlin_pair){s0, 0.3 * s0};   /* nu = 0.3: k0 = 8 a / (2 s0 - s1) = a */
+}
+static dc_patch vn_patch(double N, const double *e1)
+{
+  const double a = cbrt(N / VN_N0);
+  return patch_of(a, a, e1, N);
+}
+
+/* drives delta along e1 from d0 to d1 in k steps with N = N0 + g |delta - dref| */
+static void vn_drive(dc_cmd_state *h, dc_cmd_out *o, double d0, double d1, int k, double g, double dref)
+{
+  const dc_mindlin_pair m = vn_pair();
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  for (int i = 1; i <= k; i++) {
+    const double d = d0 + (d1 - d0) * i / k, dprev = d0 + (d1 - d0) * (i - 1) / k;
+    const dc_patch pa = vn_patch(VN_N0 + g * fabs(d - dref), e1);
+    CHECK(step_along(&p, &m, &pa, n, e1, d - dprev, h, o) == DC_OK);
+  }
+}
+
+static void test_varying_normal(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const double dst = 1.5 * (1.0 - cbrt(0.4 * 0.4));   /* virgin loading to T* = 0.6 at N0 */
+  char tag[16];
+  double v[4];
+  double worst[4] = {0, 0, 0, 0};
+  int rows[4] = {0, 0, 0, 0};
+  printf("varying normal force, error vs steps per 0.1 of delta:\n");
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0) {
+    int kind = !strcmp(tag, "eq70") ? 0 : !strcmp(tag, "eq70ns") ? 1 : !strcmp(tag, "eq71") ? 2 : !strcmp(tag, "eq71ns") ? 3 : -1;
+    if (kind < 0) continue;
+    const double d = v[0], T = v[2];
+    const double g = kind % 2 ? 4.0 : 1.0;
+    double err[3];
+    for (int s = 0, k = 1; s < 3; s++, k *= 10) {
+      dc_cmd_state h;
+      dc_cmd_out o;
+      memset(&h, 0, sizeof h);
+      if (kind < 2) {
+        vn_drive(&h, &o, 0.0, d, (int)lround(k * d / 0.1), g, 0.0);
+      } else {
+        vn_drive(&h, &o, 0.0, dst, 64, 0.0, 0.0);
+        vn_drive(&h, &o, dst, d, (int)lround(k * (dst - d) / 0.1), g, dst);
+      }
+      err[s] = fabs(dot3(o.Ft, e1) - T);
+    }
+    worst[kind] = fmax(worst[kind], err[2]);
+    if (kind % 2 == 0) {   /* slip: exact at any step size */
+      CHECK(err[0] < 1e-14 && err[1] < 1e-14 && err[2] < 1e-13);
+    } else {               /* no slip: the entering rim (linear in xi^2 per step), second order */
+      CHECK(err[2] < 1e-6 && err[1] > 50.0 * err[2]);
+      if (rows[kind] == 8 || (kind == 1 && rows[kind] == 11)) printf("  %s delta %.2f: %.1e %.1e %.1e (1, 10, 100 steps)\n", tag, d, err[0], err[1], err[2]);
+    }
+    rows[kind]++;
+  }
+  fclose(f);
+  CHECK(rows[0] == 12 && rows[1] == 12 && rows[2] == 9 && rows[3] == 9);
+  printf("  Eq. 70 slip %.1e, no slip %.1e; Eq. 71 (corrected) slip %.1e, no slip %.1e (100 steps)\n", worst[0],
+         worst[1], worst[2], worst[3]);
+}
+
+/* one force-controlled step: the displacement along e1 that gives T with
+   N = N0 + T/Xi (bracketed secant, Illinois, on copies of the state) */
+static double vn_goto(dc_cmd_state *h, dc_cmd_out *o, double T, double Xi)
+{
+  const dc_mindlin_pair m = vn_pair();
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = vn_patch(VN_N0 + T / Xi, e1);
+  dc_cmd_state c;
+#define VN_F(x, fx) do { c = *h; step_along(&p, &m, &pa, n, e1, (x), &c, o); fx = dot3(o->Ft, e1) - T; } while (0)
+  double a = 0.0, fa, b, fb;
+  VN_F(a, fa);
+  if (fa == 0.0) { *h = c; return 0.0; }
+  double w = 1e-3;
+  for (;;) {   /* bracket */
+    b = fa < 0.0 ? w : -w;
+    VN_F(b, fb);
+    if ((fa < 0.0) != (fb < 0.0) || fb == 0.0) break;
+    w *= 4.0;
+  }
+  int side = 0;
+  for (int it = 0; it < 200; it++) {
+    const double x = (a * fb - b * fa) / (fb - fa);
+    double fx;
+    VN_F(x, fx);
+    if (fx == 0.0 || fabs(b - a) < 1e-16 * fabs(x) + 1e-300) { a = b = x; break; }
+    if ((fx < 0.0) == (fb < 0.0)) { b = x; fb = fx; if (side == -1) fa *= 0.5; side = -1; }
+    else { a = x; fa = fx; if (side == 1) fb *= 0.5; side = 1; }
+  }
+#undef VN_F
+  const double dd = fabs(fa) < fabs(fb) ? a : b;
+  step_along(&p, &m, &pa, n, e1, dd, h, o);
+  return dd;
+}
+
+static void test_oblique(void)
+{
+  FILE *f = check_open_reference("cmd_tangential.csv");
+  if (!f) return;
+  const double Xi = 1.0, Ts = 0.5;   /* Theta = mu/Xi = 1/2, Lambda* = 1/2 */
+  const double Y = -1.0 / 3.0, ends[5][2] = {{0, Ts}, {Ts, Y * Ts}, {Y * Ts, -Ts}, {-Ts, Ts}, {Ts, -Ts}};
+  char tag[16];
+  double v[4], E75 = 0.0, worst = 0.0;
+  int rows = 0;
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0)
+    if (!strcmp(tag, "energy75")) E75 = v[2];
+  rewind(f);
+  /* phases as in the generator, 8 rows each; 32 force steps per row */
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  double d = 0.0, Tprev = 0.0;
+  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0) {
+    if (strcmp(tag, "oblique")) continue;
+    const int ph = (int)v[0];
+    const double T = v[1];
+    for (int i = 1; i <= 32; i++) d += vn_goto(&h, &o, Tprev + (T - Tprev) * i / 32, Xi);
+    Tprev = T;
+    worst = fmax(worst, fabs(d - v[2]));
+    CHECK_ABS(d, v[2], 1e-12, "oblique oscillation: delta(T) of Eqs. 72-74");
+    CHECK(ph >= 0 && ph < 5 && (ends[ph][0] - T) * (ends[ph][1] - T) <= 0.0);
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 40);
+  printf("oblique oscillation (Eqs. 72-74), 40 points: max error %.1e in delta\n", worst);
+  /* Eq. 75: the area of the stabilised loop, trapezoid */
+  printf("  stabilised loop energy (Eq. 75), error vs force steps per half cycle:");
+  double err = 0.0;
+  for (int N = 100; N <= 100000; N *= 10) {
+    dc_cmd_state c = h;   /* at S: T = -T*, stabilised */
+    double E = 0.0, T0 = -Ts;
+    for (int half = 0; half < 2; half++)
+      for (int i = 1; i <= N; i++) {
+        const double T1 = half == 0 ? -Ts + 2.0 * Ts * i / N : Ts - 2.0 * Ts * i / N;
+        const double dd = vn_goto(&c, &o, T1, Xi);
+        E += 0.5 * (T0 + T1) * dd;
+        T0 = T1;
+      }
+    err = fabs(E - E75) / E75;
+    printf("  N %5d: %.2e", N, err);
+  }
+  printf("\n");
+  CHECK(err < 1e-9);
+}
+
 int main(void)
 {
   test_circle_loop();
   test_ellipse_noslip();
   test_ellipse_microslip();
   test_twist();
+  test_nested();
+  test_turn_cap();
+  test_varying_normal();
+  test_oblique();
   return check_summary("test_cmd_tangential");
 }
