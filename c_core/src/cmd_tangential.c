@@ -147,6 +147,11 @@ typedef struct {
   int slip;
 } piece;
 
+static inline double max2(double a, double b) { return a > b ? a : b; }
+
+/* 0 for a finite x, NaN otherwise; sums of them never overflow */
+static inline double nf(double x) { return x - x; }
+
 /* weight of v1 in the mean of a piece: int = (x1 - x0) [(1 - w) v0 + w v1] */
 static inline double piece_w(double x0, double x1)
 {
@@ -163,10 +168,29 @@ static void clamp_piece(int dim, double x0, double x1, const double *p0, const d
                         int *nout)
 {
   const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
+  {
+    /* inside the limit everywhere: |p| <= max(|p0|, |p1|) <= l1 <= l(t) */
+    double a0 = 0.0, a1 = 0.0;
+    for (int k = 0; k < dim; k++) {
+      a0 += p0[k] * p0[k];
+      a1 += p1[k] * p1[k];
+    }
+    if (max2(a0, a1) <= l1 * l1 * (1.0 - 1e-15) && l1 < 1e150 && l1 > 1e-150) {
+      piece *o = &out[(*nout)++];
+      o->x0 = x0;
+      o->x1 = x1;
+      for (int k = 0; k < dim; k++) {
+        o->v0[k] = p0[k];
+        o->v1[k] = p1[k];
+      }
+      o->slip = 0;
+      return;
+    }
+  }
   double q[3], S = l0;
   for (int k = 0; k < dim; k++) {
     q[k] = p1[k] - p0[k];
-    S = fmax(S, fmax(fabs(p0[k]), fabs(p1[k])));
+    S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
   }
   double t[4] = {0.0, 1.0, 1.0, 1.0};
   int nt = 1;
@@ -223,7 +247,7 @@ static inline double norm_dir(int dim, const double *I, double *e)
     e[0] = I[0] > 0.0 ? 1.0 : I[0] < 0.0 ? -1.0 : 0.0;
     return fabs(I[0]);
   }
-  const double m = fmax(fabs(I[0]), fmax(fabs(I[1]), fabs(I[2])));
+  const double m = max2(fabs(I[0]), max2(fabs(I[1]), fabs(I[2])));
   if (!(m > 0.0) || !isfinite(m)) { e[0] = e[1] = e[2] = 0.0; return m; }
   const double x = I[0] / m, y = I[1] / m, z = I[2] / m, l = sqrt(x * x + y * y + z * z);
   e[0] = x / l; e[1] = y / l; e[2] = z / l;
@@ -275,10 +299,12 @@ static double group(int dim, const piece *pc, int np, double L0, piece *out, int
   return stick;
 }
 
-/* Removes slivers (into a neighbour) and joins neighbouring slip zones of
-   one direction. */
+/* Removes slivers (into a neighbour), joins neighbouring slip zones of one
+   direction and neighbouring stuck pieces that form one function to
+   rounding (|difference| <= 1e-14 L0: turning points that drifted together). */
 static int tidy(int dim, piece *pc, int np, double L0)
 {
+  const double tol = 1e-14 * L0;
   int no = 0;
   for (int i = 0; i < np; i++) {
     const piece *p = &pc[i];
@@ -286,15 +312,30 @@ static int tidy(int dim, piece *pc, int np, double L0)
       if (no > 0) { pc[no - 1].x1 = p->x1; continue; }
       if (i + 1 < np) { pc[i + 1].x0 = p->x0; continue; }
     }
-    if (no > 0 && p->slip && pc[no - 1].slip) {
-      double d = 0.0;
-      for (int k = 0; k < dim; k++) d += p->e[k] * pc[no - 1].e[k];
-      if (d > 1.0 - 1e-14) {
-        piece *q = &pc[no - 1];
-        q->x1 = p->x1;
-        const double lb = L0 * ((1.0 - q->x1) * (1.0 + q->x1));
-        for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
-        continue;
+    if (no > 0) {
+      piece *q = &pc[no - 1];
+      if (p->slip && q->slip) {
+        double d = 0.0;
+        for (int k = 0; k < dim; k++) d += p->e[k] * q->e[k];
+        if (d > 1.0 - 1e-14) {
+          q->x1 = p->x1;
+          const double lb = L0 * ((1.0 - q->x1) * (1.0 + q->x1));
+          for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
+          continue;
+        }
+      } else if (!p->slip && !q->slip) {
+        /* q continued linearly in xi^2 to p's outer end */
+        int same = 1;
+        for (int k = 0; k < dim; k++) same &= fabs(q->v1[k] - p->v0[k]) <= tol;
+        if (same) {
+          const double f = (p->x1 - q->x0) * (p->x1 + q->x0) / ((q->x1 - q->x0) * (q->x1 + q->x0));
+          for (int k = 0; k < dim; k++) same &= fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
+        }
+        if (same) {
+          q->x1 = p->x1;
+          for (int k = 0; k < dim; k++) q->v1[k] = p->v1[k];
+          continue;
+        }
       }
     }
     pc[no++] = *p;
@@ -316,7 +357,7 @@ static inline void moments(double x0, double x1, double *J1, double *J2)
    least, so that a merge does not make the rim slip), u = c0 + c1 phi,
    phi = (xi^2 - xa^2)/(xb^2 - xa^2). Returns the squared L2 change; the
    piece in *f. */
-static double merge_fit(int dim, const piece *pc, int i, piece *f)
+static double merge_fit(int dim, const piece *pc, int i, piece *f, double *norm2)
 {
   const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
   double g01, g11;
@@ -351,22 +392,72 @@ static double merge_fit(int dim, const piece *pc, int i, piece *f)
     cross += c0 * m0[k] + c1 * m1[k];
     self += c0 * c0 * g00 + 2.0 * c0 * c1 * g01 + c1 * c1 * g11;
   }
+  if (norm2) *norm2 = e2;
   return e2 - 2.0 * cross + self;
 }
 
-/* Merges the cheapest neighbours until at most DC_CMD_MAX_SEG remain. */
+/* Per-piece moments for merge costs: width, int phi, int phi^2, int u,
+   int u phi, int |u|^2 (phi the piece's own variable). */
+typedef struct {
+  double J0, J1, J2, I0[3], Ip[3], e2;
+} pmom;
+
+static void piece_moments(int dim, const piece *p, pmom *m)
+{
+  moments(p->x0, p->x1, &m->J1, &m->J2);
+  m->J0 = p->x1 - p->x0;
+  m->e2 = 0.0;
+  for (int k = 0; k < dim; k++) {
+    const double dv = p->v1[k] - p->v0[k];
+    m->I0[k] = p->v0[k] * m->J0 + dv * m->J1;
+    m->Ip[k] = p->v0[k] * m->J1 + dv * m->J2;
+    m->e2 += p->v0[k] * p->v0[k] * m->J0 + 2.0 * p->v0[k] * dv * m->J1 + dv * dv * m->J2;
+  }
+}
+
+/* The change of merge_fit(i) from the moments (same formulas). */
+static double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
+{
+  const double xa = pc[i].x0, xm = pc[i].x1, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
+  double g01, g11;
+  moments(xa, xb, &g01, &g11);
+  const double g00 = xb - xa, w = g00 - g01;
+  const double iS = 1.0 / S, kap0 = (xm - xa) * (xm + xa) * iS, lam1 = kap0, kap1 = (xb - xm) * (xb + xm) * iS;
+  double cross = 0.0, self = 0.0;
+  for (int k = 0; k < dim; k++) {
+    const double m0 = pm[i].I0[k] + pm[i + 1].I0[k];
+    const double m1 = kap0 * pm[i].Ip[k] + lam1 * pm[i + 1].I0[k] + kap1 * pm[i + 1].Ip[k];
+    const double vb = pc[i + 1].v1[k];
+    const double c0 = w > 0.0 ? (m0 - vb * g01) / w : vb, c1 = vb - c0;
+    cross += c0 * m0 + c1 * m1;
+    self += c0 * c0 * g00 + 2.0 * c0 * c1 * g01 + c1 * c1 * g11;
+  }
+  return pm[i].e2 + pm[i + 1].e2 - 2.0 * cross + self;
+}
+
+/* Over DC_CMD_MAX_SEG pieces: merges the cheapest neighbours (least change,
+   merge_fit) down to DC_CMD_MAX_SEG - 1, which leaves room for the next
+   step's new piece (a growing patch makes one per step). */
 static int cap(int dim, piece *pc, int np)
 {
-  while (np > DC_CMD_MAX_SEG) {
+  if (np <= DC_CMD_MAX_SEG) return np;
+  pmom pm[MAXP];
+  for (int i = 0; i < np; i++) piece_moments(dim, &pc[i], &pm[i]);
+  while (np > DC_CMD_MAX_SEG - 1) {
     int best = 0;
     double bc = HUGE_VAL;
-    piece bf = pc[0], f;
     for (int i = 0; i + 1 < np; i++) {
-      const double c = merge_fit(dim, pc, i, &f);
-      if (c < bc || i == 0) { bc = c; best = i; bf = f; }
+      const double c = merge_cost(dim, pc, pm, i);
+      if (c < bc || i == 0) { bc = c; best = i; }
     }
-    pc[best] = bf;
-    for (int i = best + 1; i + 1 < np; i++) pc[i] = pc[i + 1];
+    piece f;
+    merge_fit(dim, pc, best, &f, NULL);
+    pc[best] = f;
+    piece_moments(dim, &pc[best], &pm[best]);
+    for (int i = best + 1; i + 1 < np; i++) {
+      pc[i] = pc[i + 1];
+      pm[i] = pm[i + 1];
+    }
     np--;
   }
   return np;
@@ -380,7 +471,7 @@ static int profile_step(int dim, int n, const double *xi, const double *u0, cons
                         const double *d, double L0, piece *out, double *stick, double *I)
 {
   piece trial[MAXP];
-  int np = 0;
+  int np = 0, entered = 0;
   if (n == 0) {
     clamp_piece(dim, 0.0, 1.0, d, d, L0, trial, &np);
   } else {
@@ -408,11 +499,23 @@ static int profile_step(int dim, int n, const double *xi, const double *u0, cons
          part of d after its entry */
       const double z[3] = {0.0, 0.0, 0.0};
       clamp_piece(dim, x0, 1.0, d, z, L0, trial, &np);
+      entered = 1;
     }
   }
   int no;
   *stick = group(dim, trial, np, L0, out, &no);
   no = tidy(dim, out, no, L0);
+  if (entered && no >= 2 && !out[no - 1].slip && !out[no - 2].slip) {
+    /* a stuck rim grown in this step joins its neighbour when the profile
+       barely changes (mean square change <= (1e-9 L0)^2, the force kept):
+       steady growth makes one piece per step otherwise */
+    piece f;
+    const double c = merge_fit(dim, out, no - 2, &f, NULL);
+    if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
+      out[no - 2] = f;
+      no--;
+    }
+  }
   no = cap(dim, out, no);
   for (int k = 0; k < dim; k++) I[k] = 0.0;
   for (int j = 0; j < no; j++) {
@@ -455,11 +558,12 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
 {
   /* ---- inputs: finiteness and domain */
   const double a = patch->a, b = patch->b, Fb = patch->F_bound, mu = p->mu;
-  double chk = 0.0 * (a + b + Fb + patch->formed + patch->axis[0] + patch->axis[1] + patch->axis[2] + mu +
-                      n[0] + n[1] + n[2] + du[0] + du[1] + du[2] + m->s0 + m->s1 + h->a_prev + h->nseg +
-                      h->nseg_t + h->n_prev[0] + h->n_prev[1] + h->n_prev[2]);
-  if (p->twisting) chk += 0.0 * dphi;
-  if (p->dissipation) chk += 0.0 * (dt + p->t_visc);
+  double chk = ((nf(a) + nf(b)) + (nf(Fb) + nf(patch->formed))) +
+               ((nf(patch->axis[0]) + nf(patch->axis[1])) + (nf(patch->axis[2]) + nf(mu))) +
+               ((nf(n[0]) + nf(n[1])) + (nf(n[2]) + nf(du[0]))) + ((nf(du[1]) + nf(du[2])) + (nf(m->s0) + nf(m->s1))) +
+               ((nf(h->a_prev) + nf(h->nseg)) + (nf(h->nseg_t) + nf(h->n_prev[0]))) + (nf(h->n_prev[1]) + nf(h->n_prev[2]));
+  if (p->twisting) chk += nf(dphi);
+  if (p->dissipation) chk += nf(dt) + nf(p->t_visc);
   if (chk != 0.0) return DC_EDOM;   /* NaN: an input is not finite */
   if (!(mu >= 0.0 && p->t_visc >= 0.0 && (p->dissipation == 0 || p->dissipation == 1) &&
         (p->twisting == 0 || p->twisting == 1) && pair_ok(m) && Fb >= 0.0 && b >= 0.0 && a >= b &&
@@ -472,9 +576,10 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
         nt <= DC_CMD_MAX_SEG && h->a_prev >= 0.0))
     return DC_EDOM;
   for (int j = 0; j < ns; j++)
-    chk += 0.0 * (h->xi[j] + h->u0[j][0] + h->u0[j][1] + h->u0[j][2] + h->u1[j][0] + h->u1[j][1] + h->u1[j][2]);
+    chk += (nf(h->xi[j]) + (nf(h->u0[j][0]) + nf(h->u0[j][1]))) +
+           ((nf(h->u0[j][2]) + nf(h->u1[j][0])) + (nf(h->u1[j][1]) + nf(h->u1[j][2])));
   if (p->twisting)
-    for (int j = 0; j < nt; j++) chk += 0.0 * (h->xi_t[j] + h->t0[j] + h->t1[j]);
+    for (int j = 0; j < nt; j++) chk += nf(h->xi_t[j]) + (nf(h->t0[j]) + nf(h->t1[j]));
   if (chk != 0.0) return DC_EDOM;
 
   const int elliptic = a > b;
@@ -524,12 +629,15 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   const double r = fresh ? 1.0 : h->a_prev / a;
   double U0[DC_CMD_MAX_SEG][3], U1[DC_CMD_MAX_SEG][3];
   const int nsu = fresh ? 0 : ns;
+  const double *pu0 = &h->u0[0][0], *pu1 = &h->u1[0][0];
   if (nsu > 0) {
-    memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
-    memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
     const double *np0 = h->n_prev;
     const double c = dot3(np0, nh);
-    if (c != 1.0 || np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
+    if (np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
+      memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
+      memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
+      pu0 = &U0[0][0];
+      pu1 = &U1[0][0];
       if (c > -0.999) {
         const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
                              np0[0] * nh[1] - np0[1] * nh[0]};
@@ -551,7 +659,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   const double L0 = 1.5 * mu * Fb / k_major;
   piece pf[MAXP];
   double stick, I[3];
-  const int nf = profile_step(3, nsu, h->xi, &U0[0][0], &U1[0][0], r, d, L0, pf, &stick, I);
+  const int nfp = profile_step(3, nsu, h->xi, pu0, pu1, r, d, L0, pf, &stick, I);
   double F[3] = {k_major * I[0], k_major * I[1], k_major * I[2]};
   {
     const double fn = dot3(F, nh);
@@ -602,10 +710,11 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   }
 
   /* ---- results finite, then commit */
-  double fin = 0.0 * (F[0] + F[1] + F[2] + kt + stick + Mt + kr);
-  for (int j = 0; j < nf; j++)
-    fin += 0.0 * (pf[j].x1 + pf[j].v0[0] + pf[j].v0[1] + pf[j].v0[2] + pf[j].v1[0] + pf[j].v1[1] + pf[j].v1[2]);
-  for (int j = 0; j < ntw; j++) fin += 0.0 * (pt[j].x1 + pt[j].v0[0] + pt[j].v1[0]);
+  double fin = ((nf(F[0]) + nf(F[1])) + (nf(F[2]) + nf(kt))) + ((nf(stick) + nf(Mt)) + nf(kr));
+  for (int j = 0; j < nfp; j++)
+    fin += (nf(pf[j].x1) + (nf(pf[j].v0[0]) + nf(pf[j].v0[1]))) +
+           ((nf(pf[j].v0[2]) + nf(pf[j].v1[0])) + (nf(pf[j].v1[1]) + nf(pf[j].v1[2])));
+  for (int j = 0; j < ntw; j++) fin += nf(pt[j].x1) + (nf(pt[j].v0[0]) + nf(pt[j].v1[0]));
   if (fin != 0.0) return DC_ERANGE;
 
   for (int k = 0; k < 3; k++) {
@@ -617,15 +726,15 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   out->Mt = Mt;
   out->kr = kr;
   h->a_prev = a;
-  h->nseg = nf;
-  for (int j = 0; j < nf; j++) {
+  h->nseg = nfp;
+  for (int j = 0; j < nfp; j++) {
     h->xi[j] = pf[j].x1;
     for (int k = 0; k < 3; k++) {
       h->u0[j][k] = pf[j].v0[k];
       h->u1[j][k] = pf[j].v1[k];
     }
   }
-  for (int j = nf; j < DC_CMD_MAX_SEG; j++) {
+  for (int j = nfp; j < ns; j++) {   /* unused pieces back to 0 */
     h->xi[j] = 0.0;
     for (int k = 0; k < 3; k++) h->u0[j][k] = h->u1[j][k] = 0.0;
   }
@@ -636,7 +745,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
       h->t0[j] = pt[j].v0[0];
       h->t1[j] = pt[j].v1[0];
     }
-    for (int j = ntw; j < DC_CMD_MAX_SEG; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
+    for (int j = ntw; j < nt; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
   }
   return DC_OK;
 }

@@ -539,6 +539,387 @@ static void test_oblique(void)
   CHECK(err < 1e-9);
 }
 
+/* ------------------------------------------------------------------ */
+/* Three dimensions. */
+
+/* a circular displacement path of radius R at constant F_n (circle, k0 = 1,
+   mu F_n = 1): bounded by mu F_n, Lipschitz with the no-slip stiffness,
+   |F| steady on the third turn; for R >> delta_L gross sliding along the
+   path's velocity */
+static void circle_path(double R, double *Fmin, double *Fmax, double *lag, double *lip)
+{
+  const double nu = 0.3;
+  const dc_mindlin_pair m = {1.0, nu};
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  const int K = 2000;
+  double F0[3] = {0, 0, 0}, d0[2] = {0, 0};
+  *Fmin = HUGE_VAL; *Fmax = 0.0; *lag = 0.0; *lip = 0.0;
+  for (int i = 1 - K / 4; i <= 3 * K; i++) {   /* straight out to radius R, then three turns about 0 */
+    const double t = 2.0 * M_PI * i / K;
+    const double d1[2] = {i <= 0 ? R * (i + K / 4) / (K / 4) : R * cos(t), i <= 0 ? 0.0 : R * sin(t)};
+    double du[3];
+    for (int k = 0; k < 3; k++) du[k] = (d1[0] - d0[0]) * e1[k] + (d1[1] - d0[1]) * e2[k];
+    CHECK(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o) == DC_OK);
+    const double F = norm3(o.Ft);
+    CHECK(F <= 1.0 + 1e-12 && fabs(dot3(o.Ft, n)) < 1e-14);
+    double dF[3];
+    for (int k = 0; k < 3; k++) dF[k] = o.Ft[k] - F0[k];
+    *lip = fmax(*lip, norm3(dF) / norm3(du));
+    if (i > 2 * K) {
+      *Fmin = fmin(*Fmin, F);
+      *Fmax = fmax(*Fmax, F);
+      const double v[2] = {-sin(t), cos(t)}, f[2] = {dot3(o.Ft, e1), dot3(o.Ft, e2)};
+      *lag = fmax(*lag, acos(fmin(1.0, (f[0] * v[0] + f[1] * v[1]) / F)));
+    }
+    memcpy(F0, o.Ft, sizeof F0);
+    d0[0] = d1[0]; d0[1] = d1[1];
+  }
+}
+
+static void test_3d(void)
+{
+  double Fmin, Fmax, lag, lip;
+  circle_path(0.3, &Fmin, &Fmax, &lag, &lip);
+  printf("circular path R = 0.2 delta_L: |F| %.6f .. %.6f mu F_n on the third turn, Lipschitz %.4f k0\n", Fmin, Fmax, lip);
+  CHECK(Fmax - Fmin < 1e-3 && Fmax < 1.0 && lip <= 1.0 + 1e-9);
+  circle_path(7.5, &Fmin, &Fmax, &lag, &lip);
+  printf("circular path R = 5 delta_L: |F| %.6f .. %.6f mu F_n, angle to the velocity <= %.4f rad, Lipschitz %.4f k0\n",
+         Fmin, Fmax, lag, lip);
+  CHECK(Fmax - Fmin < 1e-3 && Fmin > 0.95 && lag < 0.2 && lip <= 1.0 + 1e-9);
+
+  /* an L-shaped path: the stuck core and the slipping rim both resist the
+     turn, the perpendicular stiffness is k0 at first; then sliding along e2 */
+  const double nu = 0.3;
+  const dc_mindlin_pair m = {1.0, nu};
+  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  const double ds = 1.5 * (1.0 - cbrt(0.2 * 0.2));   /* F = 0.8 mu F_n */
+  for (int i = 0; i < 100; i++) step_along(&p, &m, &pa, n, e1, ds / 100, &h, &o);
+  const double Fx = dot3(o.Ft, e1);
+  step_along(&p, &m, &pa, n, e2, 1e-7, &h, &o);
+  CHECK_REL(dot3(o.Ft, e2) / 1e-7, 1.0, 1e-5, "L path: perpendicular stiffness k0 at the turn");
+  CHECK_REL(dot3(o.Ft, e1), Fx, 1e-6, "L path: the force along e1 kept at the turn");
+  for (int i = 0; i < 1000; i++) step_along(&p, &m, &pa, n, e2, 0.01, &h, &o);
+  CHECK(dot3(o.Ft, e2) > 0.999 && norm3(o.Ft) <= 1.0 + 1e-12);
+
+  /* the contact plane turns by 90 degrees (rolling) without slip: the force
+     turns with it, magnitude kept */
+  memset(&h, 0, sizeof h);
+  for (int i = 0; i < 100; i++) step_along(&p, &m, &pa, n, e1, ds / 100, &h, &o);
+  const double F1 = norm3(o.Ft);
+  double nn[3];
+  const double zero[3] = {0, 0, 0};
+  for (int i = 1; i <= 1000; i++) {
+    const double t = 0.5 * M_PI * i / 1000;   /* n turns about e2 towards e1 */
+    for (int k = 0; k < 3; k++) nn[k] = cos(t) * n[k] + sin(t) * e1[k];
+    CHECK(dc_cmd_step(&p, &m, &pa, nn, zero, 0.0, 1e-6, &h, &o) == DC_OK);
+  }
+  CHECK_REL(norm3(o.Ft), F1, 1e-13, "plane turned by 90 degrees: |F| kept");
+  CHECK_REL(-dot3(o.Ft, n), F1, 1e-13, "plane turned by 90 degrees: F along the turned e1 (-n)");
+  /* a turn by 178.5 degrees in one step (projection, magnitude kept) */
+  for (int k = 0; k < 3; k++) nn[k] = -cos(0.026) * n[k] + sin(0.026) * e2[k];
+  dc_cmd_state h2;
+  memset(&h2, 0, sizeof h2);
+  for (int i = 0; i < 100; i++) step_along(&p, &m, &pa, n, e1, ds / 100, &h2, &o);
+  CHECK(dc_cmd_step(&p, &m, &pa, nn, zero, 0.0, 1e-6, &h2, &o) == DC_OK);
+  CHECK_REL(norm3(o.Ft), F1, 1e-13, "plane turned by 178.5 degrees: |F| kept");
+  CHECK(fabs(dot3(o.Ft, nn)) < 1e-14);
+
+  /* a straight path in any direction of the plane gives the 1D result */
+  for (int j = 0; j < 8; j++) {
+    const double ang = 0.7 * j;
+    double e[3];
+    for (int k = 0; k < 3; k++) e[k] = cos(ang) * e1[k] + sin(ang) * e2[k];
+    memset(&h, 0, sizeof h);
+    for (int i = 0; i < 10; i++) step_along(&p, &m, &pa, n, e, ds / 10, &h, &o);
+    CHECK_REL(dot3(o.Ft, e), 0.8, 1e-14, "straight path in any direction");
+  }
+}
+
+/* i and j swapped: n, du negated, twist increment the same, history
+   fields with flips = 1 negated: the force is exactly negated, the moment
+   the same, and the histories stay each other's image */
+static void test_swap(void)
+{
+  const dc_mindlin_pair m = {0.8, 0.2};
+  dc_cmd_params p = {0.4, 1e-4, 1, 1};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  dc_cmd_state A, B;
+  dc_cmd_out oa, ob;
+  memset(&A, 0, sizeof A);
+  memset(&B, 0, sizeof B);
+  unsigned long long x = 12345;
+  int same = 1;
+  for (int i = 0; i < 2000; i++) {
+    const double t = 0.002 * i;
+    double nr[3], nb[3], du[3], db[3];
+    for (int k = 0; k < 3; k++) nr[k] = cos(t) * n[k] + sin(t) * e2[k];
+    for (int k = 0; k < 3; k++) { nb[k] = -nr[k]; du[k] = 1e-3 * (check_uniform(&x) - 0.5); db[k] = -du[k]; }
+    const double a = 1.0 + 0.3 * sin(0.01 * i), b = a * (0.5 + 0.2 * cos(0.02 * i));
+    double ax[3];
+    for (int k = 0; k < 3; k++) ax[k] = cos(t) * e1[k] - sin(t) * 0.0;
+    const dc_patch pa = patch_of(a, b, ax, 1.0 + 0.5 * sin(0.03 * i));
+    const dc_patch pb = patch_of(a, b, ax, 1.0 + 0.5 * sin(0.03 * i));
+    const double dphi = 1e-3 * (check_uniform(&x) - 0.5);
+    CHECK(dc_cmd_step(&p, &m, &pa, nr, du, dphi, 1e-4, &A, &oa) == DC_OK);
+    CHECK(dc_cmd_step(&p, &m, &pb, nb, db, dphi, 1e-4, &B, &ob) == DC_OK);
+    for (int k = 0; k < 3; k++) same &= ob.Ft[k] == -oa.Ft[k];
+    same &= ob.Mt == oa.Mt && ob.kt == oa.kt && ob.kr == oa.kr;
+    const double *ha = (const double *)&A, *hb = (const double *)&B;
+    for (int k = 0; k < DC_CMD_HISTORY_NFIELDS; k++) same &= hb[k] == (dc_cmd_history[k].flips ? -ha[k] : ha[k]);
+  }
+  CHECK(same);
+  /* the field table: unique names, vectors flip, the rest does not */
+  int ok = 1;
+  for (int k = 0; k < DC_CMD_HISTORY_NFIELDS; k++)
+    for (int j = 0; j < k; j++) ok &= strcmp(dc_cmd_history[k].name, dc_cmd_history[j].name) != 0;
+  CHECK(ok && DC_CMD_HISTORY_NFIELDS == 86);
+  CHECK(dc_cmd_history[0].flips && dc_cmd_history[3].flips == 0 && dc_cmd_history[4].flips == 0);
+  CHECK(!strcmp(dc_cmd_history[DC_CMD_HISTORY_NFIELDS - 1].name, "cmd_t1_7"));
+}
+
+/* F_n -> 0 while loaded tangentially, then loss of contact */
+static void test_unloading_to_zero(void)
+{
+  const dc_mindlin_pair m = vn_pair();
+  dc_cmd_params p = {0.5, 0.0, 0, 1};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  vn_drive(&h, &o, 0.0, 0.5, 50, 0.0, 0.0);   /* F = 0.8 mu N0 ... */
+  const double zero[3] = {0, 0, 0};
+  for (int i = 1; i <= 200; i++) {
+    const double N = VN_N0 * pow(1.0 - i / 200.0, 2.0);
+    const dc_patch pa = vn_patch(N, e1);
+    CHECK(dc_cmd_step(&p, &m, &pa, n, zero, 1e-4, 1e-6, &h, &o) == DC_OK);
+    CHECK(norm3(o.Ft) <= 0.5 * N * (1.0 + 1e-12));
+  }
+  CHECK(norm3(o.Ft) == 0.0 && h.nseg == 0.0);   /* a = 0: the springs have left */
+  dc_patch off = vn_patch(1.0, e1);
+  off.formed = 0.0;
+  CHECK(dc_cmd_step(&p, &m, &off, n, zero, 0.0, 1e-6, &h, &o) == DC_OK);
+  dc_cmd_state z;
+  memset(&z, 0, sizeof z);
+  CHECK(!memcmp(&h, &z, sizeof h) && o.Ft[0] == 0.0 && o.Mt == 0.0);
+  /* F_bound = 0 with an area (an adhesive neck at its limit): no force */
+  dc_patch zb = vn_patch(1.0, e1);
+  zb.F_bound = 0.0;
+  CHECK(step_along(&p, &m, &zb, n, e1, 1e-3, &h, &o) == DC_OK && norm3(o.Ft) == 0.0 && o.Mt == 0.0);
+  /* a new contact: fresh, no slip */
+  memset(&h, 0, sizeof h);
+  const dc_patch pa = vn_patch(VN_N0, e1);
+  CHECK(step_along(&p, &m, &pa, n, e1, 1e-9, &h, &o) == DC_OK);
+  CHECK_REL(dot3(o.Ft, e1), 1e-9, 1e-8, "a new contact: k0 du");
+}
+
+/* Eq. 85: F_dis = A_t theta K0 du/dt; capped at mu F_bound */
+static void test_dissipation(void)
+{
+  const dc_mindlin_pair m = vn_pair();
+  dc_cmd_params p = {0.5, 2e-4, 1, 0};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  const dc_patch pa = patch_of(1.0, 0.5, e1, VN_N0);
+  double km, kn;
+  CHECK(dc_cmd_stiffness(&m, 1.0, 0.5, &km, &kn) == DC_OK && kn > km);
+  const double d = 1e-8, dt = 1e-5;
+  double du[3];
+  for (int k = 0; k < 3; k++) du[k] = d * e2[k];
+  CHECK(dc_cmd_step(&p, &m, &pa, n, du, 0.0, dt, &h, &o) == DC_OK);
+  CHECK_REL(dot3(o.Ft, e2), kn * d * (1.0 + 2e-4 / dt), 1e-8, "Eq. 85 on the minor axis: (1 + A_t/dt) k_minor du");
+  CHECK_REL(o.kt, kn, 1e-8, "tangent stiffness along the minor axis");
+  for (int k = 0; k < 3; k++) du[k] = 10.0 * e1[k];
+  CHECK(dc_cmd_step(&p, &m, &pa, n, du, 0.0, dt, &h, &o) == DC_OK);
+  CHECK_REL(norm3(o.Ft), 0.5 * VN_N0, 1e-15, "sliding: mu F_bound");
+  CHECK(o.kt == 0.0 && o.stick == 0.0);
+}
+
+/* Status codes (dc/status.h) and the parameter check. */
+static void test_status(void)
+{
+  const dc_mindlin_pair m = {1.0, 0.3};
+  dc_cmd_params p = {0.5, 0.0, 0, 1};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  dc_cmd_state h, h0;
+  dc_cmd_out o, o0;
+  memset(&h, 0, sizeof h);
+  const dc_patch good = patch_of(1.0, 0.5, e1, 1.0);
+  step_along(&p, &m, &good, n, e1, 0.01, &h, &o);
+  h0 = h;
+  memset(&o, 0x5A, sizeof o);
+  o0 = o;
+  const double du[3] = {1e-3, 0, 0};
+#define BAD(call) do { CHECK((call) == DC_EDOM); CHECK(!memcmp(&h, &h0, sizeof h) && !memcmp(&o, &o0, sizeof o)); } while (0)
+  dc_patch pa = good;
+  pa.a = NAN;            BAD(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o));
+  pa = good; pa.b = 1.5; BAD(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o));
+  pa = good; pa.F_bound = -1.0; BAD(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o));
+  pa = good; pa.axis[0] = pa.axis[1] = pa.axis[2] = 0.0; BAD(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o));
+  pa = good; pa.axis[1] = INFINITY; BAD(dc_cmd_step(&p, &m, &pa, n, du, 0.0, 1e-6, &h, &o));
+  const double n2[3] = {0.0, 0.0, 1.01}, dn[3] = {0.0, NAN, 0.0};
+  BAD(dc_cmd_step(&p, &m, &good, n2, du, 0.0, 1e-6, &h, &o));
+  BAD(dc_cmd_step(&p, &m, &good, n, dn, 0.0, 1e-6, &h, &o));
+  BAD(dc_cmd_step(&p, &m, &good, n, du, INFINITY, 1e-6, &h, &o));
+  const dc_mindlin_pair mb = {1.0, 0.6};
+  BAD(dc_cmd_step(&p, &mb, &good, n, du, 0.0, 1e-6, &h, &o));
+  dc_cmd_params pb = p;
+  pb.mu = -0.1;          BAD(dc_cmd_step(&pb, &m, &good, n, du, 0.0, 1e-6, &h, &o));
+  pb = p; pb.dissipation = 1; BAD(dc_cmd_step(&pb, &m, &good, n, du, 0.0, 0.0, &h, &o));
+  pb = p; pb.twisting = 2; BAD(dc_cmd_step(&pb, &m, &good, n, du, 0.0, 1e-6, &h, &o));
+  h.nseg = 9;            CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.0, 1e-6, &h, &o) == DC_EDOM); h = h0;
+  h.u1[0][1] = NAN;      CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.0, 1e-6, &h, &o) == DC_EDOM); h = h0;
+  CHECK(!memcmp(&o, &o0, sizeof o));
+  /* twisting off: dphi is not read */
+  pb = p; pb.twisting = 0;
+  CHECK(dc_cmd_step(&pb, &m, &good, n, du, NAN, 1e-6, &h, &o) == DC_OK && o.Mt == 0.0);
+#undef BAD
+  /* overflow: DC_ERANGE, untouched */
+  h = h0;
+  memcpy(&o, &o0, sizeof o);
+  const double huge[3] = {1e300, 1e300, 0};
+  const dc_patch big = patch_of(1e300, 1e300, e1, 1e300);
+  const int st = dc_cmd_step(&p, &m, &big, n, huge, 1e300, 1e-6, &h, &o);
+  CHECK(st == DC_ERANGE || st == DC_OK);
+  if (st != DC_OK) CHECK(!memcmp(&h, &h0, sizeof h) && !memcmp(&o, &o0, sizeof o));
+  /* parameter check */
+  dc_param_error err;
+  dc_cmd_params q = {0.5, 0.0, 0, 0};
+  CHECK(dc_cmd_check(&q, &err) == DC_OK);
+  q.mu = -1.0;
+  CHECK(dc_cmd_check(&q, &err) == DC_EDOM && !strcmp(err.name, "coefficientFriction") && err.value == -1.0);
+  q.mu = INFINITY;
+  CHECK(dc_cmd_check(&q, &err) == DC_EDOM && !strcmp(err.name, "coefficientFriction"));
+  q.mu = 0.0; q.t_visc = NAN;
+  CHECK(dc_cmd_check(&q, &err) == DC_EDOM && !strcmp(err.name, "tangentialViscoelasticTime"));
+  q.t_visc = 0.0; q.dissipation = 3;
+  CHECK(dc_cmd_check(&q, &err) == DC_EDOM && !strcmp(err.name, "cmdDissipation"));
+  q.dissipation = 1; q.twisting = -1;
+  CHECK(dc_cmd_check(&q, &err) == DC_EDOM && !strcmp(err.name, "cmdTwisting"));
+  double k1 = -1, k2 = -1;
+  CHECK(dc_cmd_stiffness(&m, 1.0, 0.0, &k1, &k2) == DC_EDOM && k1 == -1 && k2 == -1);
+  CHECK(dc_cmd_twist_stiffness(&m, 1.0, 1.0 + 1e-9, &k1) == DC_EDOM && k1 == -1);
+  CHECK(dc_cmd_twist_slip_moment(-1.0, 1.0, 1.0, 1.0, &k1) == DC_EDOM && k1 == -1);
+}
+
+/* A seeded random sweep: 1e5 steps of random patches (circles, ellipses
+   down to b/a = 1e-3, F_bound including 0, now and then not formed),
+   normals turning slowly and now and then jumping, displacements from
+   1e-6 to 1e2 delta_L, twisting and dissipation on: always DC_OK, finite,
+   |Ft| <= mu F_bound (1 + 1e-12), Ft normal to n, |Mt| <= M_s. */
+static void test_random_sweep(void)
+{
+  unsigned long long x = 0x2545F4914F6CDD1Dull;
+  const dc_mindlin_pair m = {2e-10, 5e-11};
+  dc_cmd_params p = {0.3, 1e-6, 1, 1};
+  double n[3] = {0, 0, 1};
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  long bad = 0, bound = 0, normal = 0, moment = 0, nonok = 0;
+  double a = 1e-4, b = 1e-4, Fb = 1.0, ax[3] = {1, 0, 0};
+  for (long i = 0; i < 100000; i++) {
+    const double r = check_uniform(&x);
+    /* the normal: a small turn, or now and then a jump */
+    double t[3] = {check_uniform(&x) - 0.5, check_uniform(&x) - 0.5, check_uniform(&x) - 0.5};
+    const double turn = r < 0.01 ? 3.0 : 0.02 * check_uniform(&x);
+    for (int k = 0; k < 3; k++) n[k] += turn * t[k];
+    const double ln = norm3(n);
+    for (int k = 0; k < 3; k++) n[k] /= ln;
+    /* the patch: slow drift, now and then a new shape */
+    if (check_uniform(&x) < 0.02) {
+      a = 1e-6 * pow(10.0, 3.0 * check_uniform(&x));
+      b = check_uniform(&x) < 0.4 ? a : a * pow(10.0, -3.0 * check_uniform(&x));
+    } else {
+      a *= 1.0 + 0.01 * (check_uniform(&x) - 0.5);
+      b = fmin(a, b * (1.0 + 0.01 * (check_uniform(&x) - 0.5)));
+    }
+    Fb = check_uniform(&x) < 0.03 ? 0.0 : fabs(Fb * (1.0 + 0.1 * (check_uniform(&x) - 0.5))) + 1e-3 * check_uniform(&x);
+    double an[3];
+    cross3(n, t, an);
+    const double la = norm3(an);
+    for (int k = 0; k < 3; k++) ax[k] = la > 0.0 ? an[k] / la : 0.0;
+    dc_patch pa = patch_of(a, b, ax, Fb);
+    if (la == 0.0) pa.b = pa.a;
+    if (check_uniform(&x) < 0.002) pa.formed = 0.0;
+    const double dL = 1.5 * p.mu * Fb * (2.0 * m.s0 - m.s1) / (8.0 * a) + 1e-300;
+    const double mag = dL * pow(10.0, -6.0 + 8.0 * check_uniform(&x));
+    double du[3] = {mag * (check_uniform(&x) - 0.5), mag * (check_uniform(&x) - 0.5), mag * (check_uniform(&x) - 0.5)};
+    const double dphi = mag / a * (check_uniform(&x) - 0.5);
+    const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, 1e-5, &h, &o);
+    if (st != DC_OK) { nonok++; continue; }
+    if (!(isfinite(o.Ft[0]) && isfinite(o.Ft[1]) && isfinite(o.Ft[2]) && isfinite(o.kt) && isfinite(o.Mt) &&
+          isfinite(o.kr) && isfinite(o.stick)))
+      bad++;
+    if (norm3(o.Ft) > p.mu * Fb * (1.0 + 1e-12)) bound++;
+    if (fabs(dot3(o.Ft, n)) > 1e-12 * (p.mu * Fb + 1e-300)) normal++;
+    double Ms = 0.0;
+    if (pa.formed != 0.0) dc_cmd_twist_slip_moment(p.mu, Fb, pa.a, pa.b, &Ms);
+    if (fabs(o.Mt) > Ms * (1.0 + 1e-12)) moment++;
+  }
+  CHECK(nonok == 0 && bad == 0 && bound == 0 && normal == 0 && moment == 0);
+  printf("random sweep, 1e5 steps: %ld not OK, %ld non-finite, %ld over mu F_bound, %ld off the plane, %ld over M_s\n",
+         nonok, bad, bound, normal, moment);
+}
+
+/* ns per step, DEM-like (printed): partial slip (the displacement
+   oscillates within about delta_L / 4 and turns slowly), the patch breathes
+   by +-10 %, the normal turns by 1e-4 rad per step. */
+static void timing(void)
+{
+  const dc_mindlin_pair m = {2e-10, 5e-11};   /* steel-like, s0 = sum 1/G_i */
+  double n0[3], e1[3], e2[3];
+  frame(n0, e1, e2);
+  for (int c = 0; c < 4; c++) {
+    dc_cmd_params p = {0.3, 0.0, 0, c >= 2};
+    const int ell = c % 2;
+    dc_cmd_state h;
+    dc_cmd_out o;
+    memset(&h, 0, sizeof h);
+    const long K = 1000000;
+    double sum = 0.0, pieces = 0.0;
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (long i = 0; i < K; i++) {
+      const double s = 1.0 + 0.1 * sin(1e-4 * i), tn = 1e-4 * i;
+      const double a = 1e-4 * s, b = ell ? 0.5 * a : a;
+      double n[3], ax[3];
+      for (int k = 0; k < 3; k++) {
+        n[k] = cos(tn) * n0[k] + sin(tn) * e2[k];
+        ax[k] = e1[k];
+      }
+      const dc_patch pa = patch_of(a, b, ax, 2.0 * s * s * s);
+      const double ang = 1e-3 * i, d = 1e-10 * sin(2e-3 * i);
+      double du[3];
+      for (int k = 0; k < 3; k++) du[k] = d * (cos(ang) * e1[k] + sin(ang) * e2[k]);
+      dc_cmd_step(&p, &m, &pa, n, du, d / a, 1e-6, &h, &o);
+      sum += o.Ft[0];
+      pieces += h.nseg + h.nseg_t;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    const double ns = ((double)(t1.tv_sec - t0.tv_sec) * 1e9 + (double)(t1.tv_nsec - t0.tv_nsec)) / K;
+    printf("dc_cmd_step, %s%s: %.0f ns per call (the loop's own cost included; %.1f pieces on average%s)\n",
+           ell ? "ellipse b/a = 0.5" : "circle", c >= 2 ? ", twisting on" : "", ns, pieces / K, sum == 0.0 ? "" : "");
+  }
+}
+
 int main(void)
 {
   test_circle_loop();
@@ -549,5 +930,12 @@ int main(void)
   test_turn_cap();
   test_varying_normal();
   test_oblique();
+  test_3d();
+  test_swap();
+  test_unloading_to_zero();
+  test_dissipation();
+  test_status();
+  test_random_sweep();
+  timing();
   return check_summary("test_cmd_tangential");
 }

@@ -95,10 +95,14 @@ extern "C" {
 #endif
 
 /* Pieces of the spring profile (force and twist each). At constant normal
-   force a profile holds 2 + (number of remembered turning points) pieces.
-   Beyond the cap the two adjacent pieces whose merge changes the profile
-   least are replaced by their least-squares fit (force kept exactly): the
-   smallest loop is forgotten first, its branch joins the enclosing one. */
+   force a profile holds 2 + (number of remembered turning points) pieces,
+   and every state that fits is exact. Beyond the cap, pairs of neighbouring
+   pieces are replaced by one (linear in xi^2, keeping their force and their
+   outer value exactly), least mean-square change first, down to one piece
+   below the cap: a remembered turning point is lost, and the branches that
+   would have returned to it are approximate (tests: 12 nested turning
+   points, 1e-4 and 2e-3 mu F_n at most beyond the cap). Loading past the
+   largest turning point still returns to the virgin curve. */
 #define DC_CMD_MAX_SEG 8
 #define DC_CMD_MAX_TURNS (DC_CMD_MAX_SEG - 2)
 
