@@ -3,6 +3,7 @@
 #include "dc/cmd_tangential.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -51,6 +52,31 @@ int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err)
 }
 
 /* ------------------------------------------------------------------ */
+/* Range-safe products (plain when the result is a normal double).      */
+
+/* c x y z / (d1 d2), factors >= 0, d1, d2 > 0 */
+static double pq(double c, double x, double y, double z, double d1, double d2)
+{
+  const double p = c * x * y * z / (d1 * d2);
+  if (p >= DBL_MIN && p <= DBL_MAX) return p;
+  if (c == 0.0 || x == 0.0 || y == 0.0 || z == 0.0) return 0.0;
+  const double f[4] = {c, x, y, z};
+  double m = 1.0;
+  int e = 0, k;
+  for (int i = 0; i < 4; i++) {
+    m *= frexp(f[i], &k);
+    e += k;
+    m = frexp(m, &k);
+    e += k;
+  }
+  m /= frexp(d1, &k);
+  e -= k;
+  m /= frexp(d2, &k);
+  e -= k;
+  return ldexp(m, e);
+}
+
+/* ------------------------------------------------------------------ */
 /* No-slip stiffnesses (review Eqs. 56-58 via dc/mindlin.h; Eq. 77).   */
 
 static int pair_ok(const dc_mindlin_pair *m)
@@ -61,57 +87,53 @@ static int pair_ok(const dc_mindlin_pair *m)
 
 static int axes_ok(double a, double b) { return isfinite(a) && isfinite(b) && b > 0.0 && b <= a && b >= 1e-150 * a; }
 
-/* Eqs. 56-57: compliances along the axes, c = 2 pi a / k */
-static void axis_compliances(const dc_mindlin_pair *m, const dc_ellint *el, double *c_major, double *c_minor)
+/* Eqs. 56-57 per unit s0 (t = s1/s0): compliances along the axes,
+   c = 2 pi a / (s0 k); circle (K = pi/2, D = pi/4): (2 - t) pi/4 */
+static void axis_compliances(double t, const dc_ellint *el, double *c_major, double *c_minor)
 {
-  *c_major = (m->s0 - m->s1) * el->K + m->s1 * el->D;
-  *c_minor = m->s0 * el->K - m->s1 * el->D;
+  *c_major = (1.0 - t) * el->K + t * el->D;
+  *c_minor = el->K - t * el->D;
 }
 
 int dc_cmd_stiffness(const dc_mindlin_pair *m, double a, double b, double *k_major, double *k_minor)
 {
   if (!pair_ok(m) || !axes_ok(a, b)) return DC_EDOM;
-  double km, kn;
-  if (a == b) {
-    km = kn = 8.0 * (a / (2.0 * m->s0 - m->s1));
-  } else {
+  const double t = m->s1 / m->s0;
+  double cm = (2.0 - t) * (M_PI / 4.0), cn = cm;
+  if (a != b) {
     const double g = b / a;
     dc_ellint el;
     if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
-    double cm, cn;
-    axis_compliances(m, &el, &cm, &cn);
-    km = 2.0 * M_PI * (a / cm);
-    kn = 2.0 * M_PI * (a / cn);
+    axis_compliances(t, &el, &cm, &cn);
   }
+  const double km = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, cm), kn = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, cn);
   if (!isfinite(km) || !isfinite(kn)) return DC_ERANGE;
   *k_major = km;
   *k_minor = kn;
   return DC_OK;
 }
 
-/* Eq. 77 generalised to two bodies: the 2x2 Cerruti system (header) */
-static double twist_stiffness(const dc_mindlin_pair *m, double a, double b, const dc_ellint *el)
+/* Eq. 77 generalised to two bodies (header), per unit s0: the stiffness
+   is 2 pi/3 a^3 / s0 times the factor returned; 4 for a circle */
+static double twist_factor(double t, double g, const dc_ellint *el)
 {
-  const double s0 = m->s0, s1 = m->s1, B = el->B, C = el->C, D = el->D;
-  const double a11 = (s0 - s1) * B + s1 * (D - C), a22 = (s0 - s1) * D + s1 * (D - C);
-  const double det = a11 * a22 - s1 * s1 * C * (B - D + C);
-  const double g = b / a;
-  const double num = (s0 * B - 2.0 * s1 * (B - D + C)) + g * g * (s0 * D - 2.0 * s1 * C);
-  return 2.0 * M_PI / 3.0 * a * a * (a * (num / det));
+  const double B = el->B, C = el->C, D = el->D;
+  const double a11 = (1.0 - t) * B + t * (D - C), a22 = (1.0 - t) * D + t * (D - C);
+  const double det = a11 * a22 - t * t * C * (B - D + C);
+  return ((B - 2.0 * t * (B - D + C)) + g * g * (D - 2.0 * t * C)) / det;
 }
 
 int dc_cmd_twist_stiffness(const dc_mindlin_pair *m, double a, double b, double *k)
 {
   if (!pair_ok(m) || !axes_ok(a, b)) return DC_EDOM;
-  double kt;
-  if (a == b) {
-    kt = 16.0 / 3.0 * a * a * (a / m->s0);
-  } else {
+  double f = 8.0 / M_PI;   /* circle: 2 pi/3 f = 16/3 */
+  if (a != b) {
     const double g = b / a;
     dc_ellint el;
     if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
-    kt = twist_stiffness(m, a, b, &el);
+    f = twist_factor(m->s1 / m->s0, g, &el);
   }
+  const double kt = pq(2.0 * M_PI / 3.0 * f, a, a, a, m->s0, 1.0);
   if (!isfinite(kt)) return DC_ERANGE;
   *k = kt;
   return DC_OK;
@@ -127,7 +149,7 @@ int dc_cmd_twist_slip_moment(double mu, double F, double a, double b, double *M)
     if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
     E = el.E;
   }
-  const double Ms = 0.375 * E * mu * F * a;
+  const double Ms = pq(0.375 * E, mu, F, a, 1.0, 1.0);
   if (!isfinite(Ms)) return DC_ERANGE;
   *M = Ms;
   return DC_OK;
@@ -545,11 +567,11 @@ static inline void turn(const double *w, double c, double ic, const double *b, d
 /* Projects v onto the plane normal to b, keeping |v| (a turn by nearly pi). */
 static inline void project_keep(const double *b, double *v)
 {
-  const double l = sqrt(dot3(v, v)), vn = dot3(v, b);
-  double r[3] = {v[0] - vn * b[0], v[1] - vn * b[1], v[2] - vn * b[2]};
-  const double lr = sqrt(dot3(r, r));
-  const double f = lr > 0.0 ? l / lr : 0.0;
-  for (int k = 0; k < 3; k++) v[k] = r[k] * f;
+  double e[3];
+  const double l = norm_dir(3, v, e), en = dot3(e, b);
+  double r[3] = {e[0] - en * b[0], e[1] - en * b[1], e[2] - en * b[2]};
+  const double lr = norm_dir(3, r, r);
+  for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
 }
 
 int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
@@ -575,12 +597,18 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->nseg_t == (double)nt && nt >= 0 &&
         nt <= DC_CMD_MAX_SEG && h->a_prev >= 0.0))
     return DC_EDOM;
-  for (int j = 0; j < ns; j++)
+  int order = 1;   /* breakpoints increase from 0 to 1 */
+  for (int j = 0; j < ns; j++) {
     chk += (nf(h->xi[j]) + (nf(h->u0[j][0]) + nf(h->u0[j][1]))) +
            ((nf(h->u0[j][2]) + nf(h->u1[j][0])) + (nf(h->u1[j][1]) + nf(h->u1[j][2])));
+    order &= h->xi[j] > (j ? h->xi[j - 1] : 0.0) && h->xi[j] <= 1.0;
+  }
   if (p->twisting)
-    for (int j = 0; j < nt; j++) chk += nf(h->xi_t[j]) + (nf(h->t0[j]) + nf(h->t1[j]));
-  if (chk != 0.0) return DC_EDOM;
+    for (int j = 0; j < nt; j++) {
+      chk += nf(h->xi_t[j]) + (nf(h->t0[j]) + nf(h->t1[j]));
+      order &= h->xi_t[j] > (j ? h->xi_t[j - 1] : 0.0) && h->xi_t[j] <= 1.0;
+    }
+  if (chk != 0.0 || !order) return DC_EDOM;
 
   const int elliptic = a > b;
   const double axl = dot3(patch->axis, patch->axis);
@@ -596,24 +624,22 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   /* ---- geometry: unit normal, stiffnesses, the map M of the increment */
   const double in = 1.0 / sqrt(nn);
   const double nh[3] = {n[0] * in, n[1] * in, n[2] * in};
-  double k_major, rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
+  const double tnu = m->s1 / m->s0;
+  double cm = (2.0 - tnu) * (M_PI / 4.0), rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
   dc_ellint el;
   const int ell = elliptic && axl > 0.0;
-  if (!ell) {
-    k_major = 8.0 * (a / (2.0 * m->s0 - m->s1));
-  } else {
+  if (ell) {
     const double g = b / a;
     if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
-    double cm, cn;
-    axis_compliances(m, &el, &cm, &cn);
-    k_major = 2.0 * M_PI * (a / cm);
+    double cn;
+    axis_compliances(tnu, &el, &cm, &cn);
     rho = cm / cn;   /* k_minor / k_major */
     const double an = dot3(patch->axis, nh);
     for (int k = 0; k < 3; k++) ax[k] = patch->axis[k] - an * nh[k];
-    const double al = sqrt(dot3(ax, ax));
+    const double al = norm_dir(3, ax, ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
-    for (int k = 0; k < 3; k++) ax[k] /= al;
   }
+  const double k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, cm);
   const double dn = dot3(du, nh);
   const double dut[3] = {du[0] - dn * nh[0], du[1] - dn * nh[1], du[2] - dn * nh[2]};
   double d[3];
@@ -655,8 +681,9 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     }
   }
 
-  /* ---- force: Coulomb limits L0 (1 - xi^2) integrate to mu F_bound */
-  const double L0 = 1.5 * mu * Fb / k_major;
+  /* ---- force: Coulomb limits L0 (1 - xi^2) integrate to mu F_bound:
+     L0 = 3 mu F_b / (2 k_major) */
+  const double L0 = pq(0.75 / M_PI * cm, mu, Fb, m->s0, a, 1.0);
   piece pf[MAXP];
   double stick, I[3];
   const int nfp = profile_step(3, nsu, h->xi, pu0, pu1, r, d, L0, pf, &stick, I);
@@ -674,17 +701,24 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     const double ea = dot3(dir, ax);
     kt = stick * k_major * (l > 0.0 && ell ? rho + (1.0 - rho) * ea * ea : ell ? 0.5 * (1.0 + rho) : 1.0);
   }
-  if (p->dissipation) {
+  const double lim = mu * Fb;
+  if (p->dissipation && stick > 0.0 && p->t_visc > 0.0) {
     /* Eq. 85: A_t (theta K0) d(delta)/dt */
     const double f = p->t_visc / dt * stick * k_major;
-    for (int k = 0; k < 3; k++) F[k] += f * d[k];
+    double G[3];
+    for (int k = 0; k < 3; k++) G[k] = F[k] + f * d[k];
+    if (isfinite(G[0]) && isfinite(G[1]) && isfinite(G[2])) {
+      for (int k = 0; k < 3; k++) F[k] = G[k];
+    } else if (norm_dir(3, d, G) > 0.0) {   /* the viscous part dominates: at the limit along d */
+      for (int k = 0; k < 3; k++) F[k] = lim * G[k];
+    }
   }
   {
-    const double lim = mu * Fb, f2 = dot3(F, F);
-    if (f2 > lim * lim) {
-      const double s = lim / sqrt(f2);
-      for (int k = 0; k < 3; k++) F[k] *= s;
-    }
+    double e[3];
+    const double fn = dot3(F, nh);   /* the viscous part may leave the plane by rounding */
+    for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+    if (norm_dir(3, F, e) > lim)
+      for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
 
   /* ---- twisting (Eq. 77; full slip 3/8 mu F a E) */
@@ -692,16 +726,14 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   int ntw = 0;
   double Mt = 0.0, kr = 0.0;
   if (p->twisting) {
-    double ktw, E;
-    if (!ell) {
-      ktw = 16.0 / 3.0 * a * a * (a / m->s0);
-      E = M_PI / 2.0;
-    } else {
-      ktw = twist_stiffness(m, a, b, &el);
+    double f = 8.0 / M_PI, E = M_PI / 2.0;   /* circle */
+    if (ell) {
+      f = twist_factor(tnu, b / a, &el);
       E = el.E;
     }
-    const double Ms = 0.375 * E * mu * Fb * a;
-    const double Lt = 1.5 * Ms / ktw;
+    const double ktw = pq(2.0 * M_PI / 3.0 * f, a, a, a, m->s0, 1.0);
+    const double Ms = pq(0.375 * E, mu, Fb, a, 1.0, 1.0);
+    const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * f), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
     double st, It;
     ntw = profile_step(1, fresh ? 0 : nt, h->xi_t, h->t0, h->t1, r, &dphi, Lt, pt, &st, &It);
     Mt = ktw * It;
@@ -734,7 +766,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
       h->u1[j][k] = pf[j].v1[k];
     }
   }
-  for (int j = nfp; j < ns; j++) {   /* unused pieces back to 0 */
+  for (int j = nfp; j < DC_CMD_MAX_SEG; j++) {   /* unused pieces 0: one history per state */
     h->xi[j] = 0.0;
     for (int k = 0; k < 3; k++) h->u0[j][k] = h->u1[j][k] = 0.0;
   }
@@ -745,7 +777,12 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
       h->t0[j] = pt[j].v0[0];
       h->t1[j] = pt[j].v1[0];
     }
-    for (int j = ntw; j < nt; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
+    for (int j = ntw; j < DC_CMD_MAX_SEG; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
+  } else {   /* not read: kept at 0 */
+    h->nseg_t = 0.0;
+    memset(h->xi_t, 0, sizeof h->xi_t);
+    memset(h->t0, 0, sizeof h->t0);
+    memset(h->t1, 0, sizeof h->t1);
   }
   return DC_OK;
 }

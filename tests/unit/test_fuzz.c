@@ -24,6 +24,7 @@
    their headers promise. Prints the calls and statuses per function and
    the time taken. */
 #include "check.h"
+#include "dc/cmd_tangential.h"
 #include "dc/contract.h"
 #include "dc/curvature.h"
 #include "dc/damping.h"
@@ -1454,6 +1455,181 @@ static void fuzz_mindlin(void)
 }
 
 /* ---------------------------------------------------------------- */
+/* cmd_tangential.h                                                    */
+
+/* a material pair inside dc_mindlin_pair_init's range (s0 > 0, -s0 < s1 <= s0/2) */
+static dc_mindlin_pair cmd_pair(void)
+{
+  const double s0 = U() < 0.6 ? fz_log(1e-12, 1e-8) : fz_pos();
+  return (dc_mindlin_pair){s0, s0 * (U() < 0.1 ? PICK(0.5, -0.999999, 0.0) : -0.9 + 1.4 * U())};
+}
+
+static int cmd_pair_ok(const dc_mindlin_pair *m)
+{
+  return ALLFIN(m->s0, m->s1) && m->s0 > 0.0 && m->s1 > -m->s0 && m->s1 <= 0.5 * m->s0;
+}
+
+static int cmd_axes_ok(double a, double b) { return ALLFIN(a, b) && b > 0.0 && b <= a && b >= 1e-150 * a; }
+
+static void fuzz_cmd(void)
+{
+  fz_fn *f = fz_new("dc_cmd_check");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    dc_cmd_params p = {A(U() < 0.7 ? U() : PICK(0.0, -0.0, 1e300, -1e-300)), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0),
+                       AI(UI(2)), AI(UI(2))};
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_cmd_check(&p, &err);
+    const int inside = ALLFIN(p.mu, p.t_visc) && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
+                       (p.twisting == 0 || p.twisting == 1);
+    FZ_CHECK(f, st, !ALLFIN(p.mu, p.t_visc), inside, 1, 1, "mu %.17g t_visc %.17g flags %d %d", p.mu, p.t_visc,
+             p.dissipation, p.twisting);
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) && (st == DC_OK ? UNTOUCHED(err) : err.name != NULL && err.range != NULL),
+              "wrong status or error report", "mu %.17g t_visc %.17g flags %d %d: status %d", p.mu, p.t_visc,
+              p.dissipation, p.twisting, st);
+  }
+  fz_done(f);
+
+  fz_fn *fs = fz_new("dc_cmd_stiffness");
+  fz_fn *ft = fz_new("dc_cmd_twist_stiffness");
+  fz_fn *fm = fz_new("dc_cmd_twist_slip_moment");
+  ft->seconds = fm->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    dc_mindlin_pair m = cmd_pair();
+    if (U() < 0.05) { m.s0 = A(fz_wide()); m.s1 = A(fz_wide()); }
+    m.s0 = A(m.s0);
+    const double a = A(U() < 0.5 ? fz_log(1e-9, 1e-2) : fz_pos());
+    const double b = A(U() < 0.3 ? a : a * (U() < 0.6 ? U() : fz_log(1e-160, 1.0)));
+    const int dom = cmd_pair_ok(&m) && cmd_axes_ok(a, b), bad = !ALLFIN(m.s0, m.s1, a, b);
+    double kk[2];
+    SENTINEL(kk);
+    int st = dc_cmd_stiffness(&m, a, b, &kk[0], &kk[1]);
+    FZ_CHECK(fs, st, bad, dom, UNTOUCHED(kk), FIN(kk) && kk[0] >= 0.0 && kk[1] >= 0.0,
+             "s0 %.17g s1 %.17g a %.17g b %.17g", m.s0, m.s1, a, b);
+    /* k <= 8 a / s0 */
+    FZ_EXPECT(fs, st != DC_ERANGE || lg(8.0) + lg(a) - lg(m.s0) > LOG_MAX - 1.0, "DC_ERANGE for a representable stiffness",
+              "s0 %.17g a %.17g", m.s0, a);
+    ft->seconds -= fz_now();
+    double kt;
+    SENTINEL(kt);
+    st = dc_cmd_twist_stiffness(&m, a, b, &kt);
+    FZ_CHECK(ft, st, bad, dom, UNTOUCHED(kt), isfinite(kt) && kt >= 0.0, "s0 %.17g s1 %.17g a %.17g b %.17g", m.s0, m.s1, a, b);
+    /* k <= 16/3 a^3 / s0 times a few */
+    FZ_EXPECT(ft, st != DC_ERANGE || lg(16.0) + 3.0 * lg(a) - lg(m.s0) > LOG_MAX - 2.0,
+              "DC_ERANGE for a representable stiffness", "s0 %.17g a %.17g", m.s0, a);
+    ft->seconds += fz_now();
+    fm->seconds -= fz_now();
+    const double mu = A(U() < 0.8 ? U() : 0.0), F = A(U() < 0.6 ? fz_log(1e-9, 1e3) : fz_pos());
+    double M;
+    SENTINEL(M);
+    st = dc_cmd_twist_slip_moment(mu, F, a, b, &M);
+    FZ_CHECK(fm, st, !ALLFIN(mu, F, a, b), ALLFIN(mu, F) && mu >= 0.0 && F >= 0.0 && cmd_axes_ok(a, b), UNTOUCHED(M),
+             isfinite(M) && M >= 0.0, "mu %.17g F %.17g a %.17g b %.17g", mu, F, a, b);
+    FZ_EXPECT(fm, st != DC_ERANGE || lg(mu) + lg(F) + lg(a) > LOG_MAX - 1.0, "DC_ERANGE for a representable moment",
+              "mu %.17g F %.17g a %.17g", mu, F, a);
+    fm->seconds += fz_now();
+  }
+  fz_done(fs);
+
+  /* the step: chains of calls on one history (a contact), its inputs now
+     and then wild; now and then a fresh or a corrupted history */
+  f = fz_new("dc_cmd_step");
+  dc_cmd_state h;
+  memset(&h, 0, sizeof h);
+  int corrupt = 0;
+  double n0[3] = {0.0, 0.0, 1.0};
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) { memset(&h, 0, sizeof h); corrupt = 0; }
+    if (U() < 0.003) {   /* a corrupted history: any status but the promises */
+      double *hv = (double *)&h;
+      hv[UI(DC_CMD_HISTORY_NFIELDS)] = fz_wild();
+      corrupt = 1;
+    }
+    dc_cmd_params p = {A(U() < 0.9 ? U() : 0.0), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0), AI(U() < 0.5), AI(U() < 0.5)};
+    const dc_mindlin_pair m0 = cmd_pair();
+    const dc_mindlin_pair m = {A(m0.s0), A(m0.s1)};
+    /* the normal turns slowly, or jumps */
+    double n[3];
+    if (U() < 0.05) unit_vector(n0);
+    else {
+      for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
+      const double l = sqrt(dot3(n0, n0));
+      for (int i = 0; i < 3; i++) n0[i] /= l;
+    }
+    for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
+    dc_patch pa;
+    const double a = A(U() < 0.6 ? fz_log(1e-7, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
+    pa.a = a;
+    pa.b = A(U() < 0.3 ? a : a * (U() < 0.7 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0)));
+    double ax[3];
+    unit_vector(ax);
+    for (int i = 0; i < 3; i++) pa.axis[i] = A(U() < 0.05 ? 0.0 : ax[i]);
+    pa.F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
+    pa.F_elastic = pa.F_bound;
+    pa.formed = A(U() < 0.02 ? 0.0 : 1.0);
+    const double scale = 1.5 * p.mu * pa.F_bound * m.s0 / (8.0 * a + 1e-300);
+    double du[3];
+    for (int i = 0; i < 3; i++) du[i] = A(U() < 0.7 ? scale * fz_sign(fz_log(1e-6, 1e2)) : U() < 0.1 ? 0.0 : fz_wide());
+    const double dphi = A(U() < 0.7 ? scale / (a + 1e-300) * fz_sign(fz_log(1e-6, 1e2)) : fz_wide());
+    const double dt = A(U() < 0.8 ? fz_log(1e-8, 1e-3) : PICK(0.0, -1e-6));
+    /* the promises */
+    const int bad = !ALLFIN(p.mu, a, pa.b, pa.axis[0], pa.axis[1], pa.axis[2], pa.F_bound, pa.formed, n[0], n[1], n[2],
+                            du[0], du[1], du[2], m.s0, m.s1) ||
+                    (p.twisting && !isfinite(dphi)) || (p.dissipation && !ALLFIN(dt, p.t_visc));
+    const double nn = dot3(n, n);
+    double axn = 0.0, axl = 0.0;
+    if (!bad) { axn = dot3(pa.axis, n); axl = dot3(pa.axis, pa.axis); }
+    const int axis_ok = pa.b >= (1.0 - 1e-6) * a || (fabs(axl - 1.0) < 1e-6 && fabs(axn) < 0.99);
+    const int dom = !bad && !corrupt && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
+                    (p.twisting == 0 || p.twisting == 1) && cmd_pair_ok(&m) && pa.F_bound >= 0.0 &&
+                    (a == 0.0 ? pa.b == 0.0 : cmd_axes_ok(a, pa.b)) && fabs(nn - 1.0) <= 1e-6 &&
+                    (!p.dissipation || dt > 0.0) && axis_ok;
+    const dc_cmd_state h0 = h;
+    dc_cmd_out o;
+    SENTINEL(o);
+    const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, dt, &h, &o);
+    const int untouched = UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h);
+    int fin_ok = FIN(o) && FIN(h) && h.nseg >= 0.0 && h.nseg <= DC_CMD_MAX_SEG && h.nseg_t >= 0.0 && h.nseg_t <= DC_CMD_MAX_SEG;
+    if (st == DC_OK && !bad && pa.formed != 0.0) {
+      /* |Ft| <= mu F_bound, |Mt| <= M_s, Ft in the plane */
+      const double lim = p.mu * pa.F_bound, F = hypot(hypot(o.Ft[0], o.Ft[1]), o.Ft[2]);
+      fin_ok &= F <= lim * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN || !(lim < 1e300);
+      /* (a subnormal force has too few bits for its direction) */
+      if (fin_ok && F > 1e3 * DBL_MIN) fin_ok &= fabs(o.Ft[0] / F * n[0] + o.Ft[1] / F * n[1] + o.Ft[2] / F * n[2]) <= 1e-12;
+    }
+    FZ_CHECK(f, st, bad, dom, untouched, fin_ok, "mu %.17g pair %.17g %.17g a %.17g b %.17g F_b %.17g formed %.17g n (%.17g %.17g %.17g) du (%.17g %.17g %.17g) dphi %.17g dt %.17g flags %d %d corrupt %d",
+             p.mu, m.s0, m.s1, a, pa.b, pa.F_bound, pa.formed, n[0], n[1], n[2], du[0], du[1], du[2], dphi, dt,
+             p.dissipation, p.twisting, corrupt);
+    /* DC_ERANGE only where a result can overflow: the force scale mu F_b,
+       the stiffnesses ~ a/s0, a^3/s0, the limits ~ mu F_b s0/a, mu F_b s0/a^2,
+       the displacements and the stored profile */
+    if (st == DC_ERANGE) {
+      double big = fmax(lg(p.mu) + lg(pa.F_bound), lg(8.0 * a) - lg(m.s0) + fmax(0.0, lg(p.t_visc) - lg(dt)));
+      big = fmax(big, fmax(3.0 * lg(a) - lg(m.s0) + 2.0, lg(p.mu) + lg(pa.F_bound) + lg(m.s0) - 2.0 * lg(a) + 1.0));
+      big = fmax(big, fmax(lg(p.mu) + lg(pa.F_bound) + lg(m.s0) - lg(a), fmax(lg(dphi), lg(h0.a_prev) - lg(a))));
+      /* the twisting moment: M_s ~ mu F_b a, k_tau dphi ~ a^3 dphi / s0 */
+      big = fmax(big, fmax(lg(p.mu) + lg(pa.F_bound) + lg(a), 3.0 * lg(a) - lg(m.s0) + lg(dphi) + 2.0));
+      for (int i = 0; i < 3; i++) big = fmax(big, lg(du[i]));
+      const double *hv = (const double *)&h0;
+      for (int i = 0; i < DC_CMD_HISTORY_NFIELDS; i++) big = fmax(big, lg(hv[i]));
+      FZ_EXPECT(f, corrupt || big > LOG_MAX - 6.0, "DC_ERANGE for representable results",
+                "mu %.17g pair %.17g %.17g a %.17g b %.17g F_b %.17g du (%.17g %.17g %.17g) dphi %.17g", p.mu, m.s0, m.s1, a,
+                pa.b, pa.F_bound, du[0], du[1], du[2], dphi);
+    }
+    if (st != DC_OK) {
+      if (U() < 0.5) { memset(&h, 0, sizeof h); corrupt = 0; }
+    } else if (corrupt && U() < 0.2) {
+      memset(&h, 0, sizeof h);
+      corrupt = 0;
+    }
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
 /* root_find.h                                                        */
 
 typedef struct {
@@ -1624,6 +1800,7 @@ int main(void)
   fuzz_patch();
   fuzz_damping();
   fuzz_mindlin();
+  fuzz_cmd();
   fuzz_root_find();
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",

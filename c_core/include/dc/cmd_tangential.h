@@ -41,10 +41,18 @@
      Eq. 67 (that is (2-nu) Phi / (8 G a) (...)^-1/3). Implemented in the
      pair form: compliance sums of dc_mindlin_pair.
    - Eq. 71 (decreasing tangential, increasing normal force): the signs of
-     mu dN/dF_t are reversed. Correct:
-       S = C0 [-mu dN/dF_t + (1 + mu dN/dF_t) (1 - (F* - F)/(2 mu F_n))^-1/3],
-     continuous with the no-slip branch S = C0 at dN/dF_t = -1/mu (the
-     printed form gives C0 (2 (...)^-1/3 - 1) there).
+     mu dN/dF_t are reversed, and F* is the turning point shifted by the
+     normal force since: with m = mu dN/dF_t,
+       S = C0 [-m + (1 + m) (1 - (F* + mu (N - N*) - F)/(2 mu N))^-1/3],
+     continuous with the no-slip branch S = C0 at m = -1 (the printed form
+     gives C0 (2 (...)^-1/3 - 1) there); Eq. 73 (first line) is this form.
+     Checked by a brute-force spring bed to 2e-7 (generator) and by the law.
+   - Eq. 73, second line: [1 + 1/(1 + Theta Lambda)] is [1 + Lambda/(1 +
+     Theta Lambda)] (the virgin curve in reverse after the memory point;
+     the printed one misses the brute-force bed by 40 %).
+   - Eqs. 72-74 and 75 hold with C0 at the current contact radius (Eq. 75
+     is the exact area of the stabilised loop to 25 digits); Eq. 76 is its
+     small-amplitude limit (without the stray eta) in the one-body form.
    - Eq. 85: F_dis = eta/(2G) d(delta)/dt dF/d(delta) is right; its second
      form drops the factor G^/G (dF/d delta = 8 G^ a / Phi (...)^1/2).
    - Eq. 77 (twisting) is right for two identical bodies with "mu" the shear
@@ -155,11 +163,15 @@ typedef struct {
    n: the unit contact normal of this step (|n|^2 within 1e-6 of 1);
    du: displacement increment of this step (its normal part is removed);
    dphi: twist increment about n [rad] (read with twisting);
-   dt: time step [s] > 0 (read with dissipation).
-   Updates h and fills out. DC_EDOM for a non-finite or out-of-domain
-   input; DC_ERANGE when a result overflows. On an error h and out are
-   untouched. No allocation; the circle (a == b) skips the elliptic
-   integrals. */
+   dt: time step [s] > 0 (read with dissipation);
+   h: all zero, or left by earlier calls (its breakpoints increase to 1).
+   Updates h (unused pieces, and the twist fields without twisting, are
+   set to 0, so that one state has one history) and fills out. DC_EDOM for
+   a non-finite or out-of-domain input; DC_ERANGE when a result, a stored
+   value or a limit (3 mu F_b / (2 k), the stiffnesses) overflows. On an
+   error h and out are untouched. A friction load so small that the force
+   is subnormal gives a force whose direction has few significant bits. No
+   allocation; the circle (a == b) skips the elliptic integrals. */
 int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
                 const double n[3], const double du[3], double dphi, double dt,
                 dc_cmd_state *h, dc_cmd_out *out);
