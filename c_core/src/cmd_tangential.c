@@ -174,6 +174,14 @@ static inline double max2(double a, double b) { return a > b ? a : b; }
 /* 0 for a finite x, NaN otherwise; sums of them never overflow */
 static inline double nf(double x) { return x - x; }
 
+/* The profile functions below take the number of components (3: force,
+   1: twist) as a constant through two instantiations of profile_step. */
+#if defined(__GNUC__)
+#define DC_INLINE static inline __attribute__((always_inline))
+#else
+#define DC_INLINE static inline
+#endif
+
 /* weight of v1 in the mean of a piece: int = (x1 - x0) [(1 - w) v0 + w v1] */
 static inline double piece_w(double x0, double x1)
 {
@@ -186,48 +194,47 @@ static inline double piece_w(double x0, double x1)
    t = (xi^2 - x0^2)/(x1^2 - x0^2), both sides being linear in t. Appends
    the parts (slip parts with their trial values; group() puts them on
    the limit). */
-static void clamp_piece(int dim, double x0, double x1, const double *p0, const double *p1, double L0, piece *out,
+DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, const double *p1, double L0, piece *out,
                         int *nout)
 {
   const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
-  {
-    /* inside the limit everywhere: |p| <= max(|p0|, |p1|) <= l1 <= l(t) */
-    double a0 = 0.0, a1 = 0.0;
-    for (int k = 0; k < dim; k++) {
-      a0 += p0[k] * p0[k];
-      a1 += p1[k] * p1[k];
-    }
-    if (max2(a0, a1) <= l1 * l1 * (1.0 - 1e-15) && l1 < 1e150 && l1 > 1e-150) {
-      piece *o = &out[(*nout)++];
-      o->x0 = x0;
-      o->x1 = x1;
-      for (int k = 0; k < dim; k++) {
-        o->v0[k] = p0[k];
-        o->v1[k] = p1[k];
-      }
-      o->slip = 0;
-      return;
-    }
-  }
   double q[3], S = l0;
   for (int k = 0; k < dim; k++) {
     q[k] = p1[k] - p0[k];
     S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
   }
+  /* g(t) = |p(t)|^2 - l(t)^2 = A t^2 + 2 B t + C, scaled by 1/S^2 only
+     where the squares could leave the doubles */
+  const double iS = S > 0.0 && (S < 1e-150 || S > 1e150) ? 1.0 / S : 1.0;
+  const double la = l0 * iS, dl = (l1 - l0) * iS;
+  double A = -dl * dl, B = -la * dl, C = -la * la;
+  for (int k = 0; k < dim; k++) {
+    const double ps = p0[k] * iS, qs = q[k] * iS;
+    A += qs * qs;
+    B += ps * qs;
+    C += ps * ps;
+  }
+  /* the whole piece inside its limit, or the whole piece beyond it: from
+     g(0), g(1) and, when it lies in (0, 1), the vertex -B/A */
+  const double g1 = A + 2.0 * B + C;
+  const int vertex = A != 0.0 && (A > 0.0 ? (B < 0.0 && -B < A) : (B > 0.0 && B < -A));
+  int whole = -1;
+  if (S == 0.0 || (C <= 0.0 && g1 <= 0.0 && (A >= 0.0 || !vertex || A * C >= B * B))) whole = 0;
+  else if (C > 0.0 && g1 > 0.0 && (A <= 0.0 || !vertex || A * C > B * B)) whole = 1;
+  if (whole >= 0) {
+    piece *o = &out[(*nout)++];
+    o->x0 = x0;
+    o->x1 = x1;
+    for (int k = 0; k < dim; k++) {
+      o->v0[k] = p0[k];
+      o->v1[k] = p1[k];
+    }
+    o->slip = whole;
+    return;
+  }
   double t[4] = {0.0, 1.0, 1.0, 1.0};
   int nt = 1;
-  double iS = 0.0, la = 0.0, dl = 0.0;
-  if (S > 0.0) {
-    iS = 1.0 / S;
-    la = l0 * iS;
-    dl = (l1 - l0) * iS;
-    double A = -dl * dl, B = -la * dl, C = -la * la;   /* A t^2 + 2 B t + C */
-    for (int k = 0; k < dim; k++) {
-      const double ps = p0[k] * iS, qs = q[k] * iS;
-      A += qs * qs;
-      B += ps * qs;
-      C += ps * ps;
-    }
+  {
     double r[2];
     int nr = 0;
     if (A != 0.0) {
@@ -259,11 +266,11 @@ static void clamp_piece(int dim, double x0, double x1, const double *p0, const d
       g += v * v;
     }
     const double l = la + dl * tm;
-    o->slip = S > 0.0 && g > l * l;
+    o->slip = g > l * l;
   }
 }
 
-static inline double norm_dir(int dim, const double *I, double *e)
+DC_INLINE double norm_dir(int dim, const double *I, double *e)
 {
   if (dim == 1) {
     e[0] = I[0] > 0.0 ? 1.0 : I[0] < 0.0 ? -1.0 : 0.0;
@@ -279,7 +286,7 @@ static inline double norm_dir(int dim, const double *I, double *e)
 /* Puts each contiguous slipping zone on its limit with one direction, that
    of its integrated trial values; returns the stuck length (sum of the
    stuck widths, theta of Eqs. 70-71). */
-static double group(int dim, const piece *pc, int np, double L0, piece *out, int *nout)
+DC_INLINE double group(int dim, const piece *pc, int np, double L0, piece *out, int *nout)
 {
   double stick = 0.0;
   int no = 0;
@@ -324,7 +331,7 @@ static double group(int dim, const piece *pc, int np, double L0, piece *out, int
 /* Removes slivers (into a neighbour), joins neighbouring slip zones of one
    direction and neighbouring stuck pieces that form one function to
    rounding (|difference| <= 1e-14 L0: turning points that drifted together). */
-static int tidy(int dim, piece *pc, int np, double L0)
+DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
 {
   const double tol = 1e-14 * L0;
   int no = 0;
@@ -379,7 +386,7 @@ static inline void moments(double x0, double x1, double *J1, double *J2)
    least, so that a merge does not make the rim slip), u = c0 + c1 phi,
    phi = (xi^2 - xa^2)/(xb^2 - xa^2). Returns the squared L2 change; the
    piece in *f. */
-static double merge_fit(int dim, const piece *pc, int i, piece *f, double *norm2)
+DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *norm2)
 {
   const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
   double g01, g11;
@@ -424,7 +431,7 @@ typedef struct {
   double J0, J1, J2, I0[3], Ip[3], e2;
 } pmom;
 
-static void piece_moments(int dim, const piece *p, pmom *m)
+DC_INLINE void piece_moments(int dim, const piece *p, pmom *m)
 {
   moments(p->x0, p->x1, &m->J1, &m->J2);
   m->J0 = p->x1 - p->x0;
@@ -438,7 +445,7 @@ static void piece_moments(int dim, const piece *p, pmom *m)
 }
 
 /* The change of merge_fit(i) from the moments (same formulas). */
-static double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
+DC_INLINE double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
 {
   const double xa = pc[i].x0, xm = pc[i].x1, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
   double g01, g11;
@@ -460,7 +467,7 @@ static double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
 /* Over DC_CMD_MAX_SEG pieces: merges the cheapest neighbours (least change,
    merge_fit) down to DC_CMD_MAX_SEG - 1, which leaves room for the next
    step's new piece (a growing patch makes one per step). */
-static int cap(int dim, piece *pc, int np)
+DC_INLINE int cap(int dim, piece *pc, int np)
 {
   if (np <= DC_CMD_MAX_SEG) return np;
   pmom pm[MAXP];
@@ -489,7 +496,7 @@ static int cap(int dim, piece *pc, int np)
    u0, u1; stride dim) rescaled by r = a_prev / a, the increment d for the
    stuck springs, entering rim, clamp, group, tidy, cap. Returns the number
    of pieces in out; *stick and I = int_0^1 u dxi. */
-static int profile_step(int dim, int n, const double *xi, const double *u0, const double *u1, double r,
+DC_INLINE int profile_step(int dim, int n, const double *xi, const double *u0, const double *u1, double r,
                         const double *d, double L0, piece *out, double *stick, double *I)
 {
   piece trial[MAXP];
@@ -545,6 +552,18 @@ static int profile_step(int dim, int n, const double *xi, const double *u0, cons
     for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
   }
   return no;
+}
+
+static int profile_step3(int n, const double *xi, const double *u0, const double *u1, double r, const double *d,
+                         double L0, piece *out, double *stick, double *I)
+{
+  return profile_step(3, n, xi, u0, u1, r, d, L0, out, stick, I);
+}
+
+static int profile_step1(int n, const double *xi, const double *u0, const double *u1, double r, const double *d,
+                         double L0, piece *out, double *stick, double *I)
+{
+  return profile_step(1, n, xi, u0, u1, r, d, L0, out, stick, I);
 }
 
 /* ------------------------------------------------------------------ */
@@ -686,7 +705,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   const double L0 = pq(0.75 / M_PI * cm, mu, Fb, m->s0, a, 1.0);
   piece pf[MAXP];
   double stick, I[3];
-  const int nfp = profile_step(3, nsu, h->xi, pu0, pu1, r, d, L0, pf, &stick, I);
+  const int nfp = profile_step3(nsu, h->xi, pu0, pu1, r, d, L0, pf, &stick, I);
   double F[3] = {k_major * I[0], k_major * I[1], k_major * I[2]};
   {
     const double fn = dot3(F, nh);
@@ -735,7 +754,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     const double Ms = pq(0.375 * E, mu, Fb, a, 1.0, 1.0);
     const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * f), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
     double st, It;
-    ntw = profile_step(1, fresh ? 0 : nt, h->xi_t, h->t0, h->t1, r, &dphi, Lt, pt, &st, &It);
+    ntw = profile_step1(fresh ? 0 : nt, h->xi_t, h->t0, h->t1, r, &dphi, Lt, pt, &st, &It);
     Mt = ktw * It;
     if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
     kr = ktw * st;

@@ -880,44 +880,62 @@ static void test_random_sweep(void)
          nonok, bad, bound, normal, moment);
 }
 
-/* ns per step, DEM-like (printed): partial slip (the displacement
-   oscillates within about delta_L / 4 and turns slowly), the patch breathes
-   by +-10 %, the normal turns by 1e-4 rad per step. */
-static void timing(void)
+/* ns per step, DEM-like (printed, not asserted): partial slip (the
+   displacement oscillates within about delta_L / 4 and turns slowly), the
+   patch breathes by +-10 %, the normal turns by 1e-4 rad per step; the
+   same loop without the call is timed and subtracted. Also the simplest
+   case: a constant patch and a small oscillation along one line. */
+static double timing_loop(int c, int call, double *pieces)
 {
   const dc_mindlin_pair m = {2e-10, 5e-11};   /* steel-like, s0 = sum 1/G_i */
   double n0[3], e1[3], e2[3];
   frame(n0, e1, e2);
-  for (int c = 0; c < 4; c++) {
-    dc_cmd_params p = {0.3, 0.0, 0, c >= 2};
-    const int ell = c % 2;
-    dc_cmd_state h;
-    dc_cmd_out o;
-    memset(&h, 0, sizeof h);
-    const long K = 1000000;
-    double sum = 0.0, pieces = 0.0;
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
-    for (long i = 0; i < K; i++) {
-      const double s = 1.0 + 0.1 * sin(1e-4 * i), tn = 1e-4 * i;
-      const double a = 1e-4 * s, b = ell ? 0.5 * a : a;
-      double n[3], ax[3];
-      for (int k = 0; k < 3; k++) {
-        n[k] = cos(tn) * n0[k] + sin(tn) * e2[k];
-        ax[k] = e1[k];
-      }
-      const dc_patch pa = patch_of(a, b, ax, 2.0 * s * s * s);
-      const double ang = 1e-3 * i, d = 1e-10 * sin(2e-3 * i);
-      double du[3];
-      for (int k = 0; k < 3; k++) du[k] = d * (cos(ang) * e1[k] + sin(ang) * e2[k]);
-      dc_cmd_step(&p, &m, &pa, n, du, d / a, 1e-6, &h, &o);
-      sum += o.Ft[0];
-      pieces += h.nseg + h.nseg_t;
+  dc_cmd_params p = {0.3, 0.0, 0, c >= 2 && c < 4};
+  const int ell = c % 2, simple = c >= 4;
+  dc_cmd_state h;
+  dc_cmd_out o;
+  memset(&h, 0, sizeof h);
+  memset(&o, 0, sizeof o);
+  const long K = 1000000;
+  volatile double sink = 0.0;
+  double pc = 0.0;
+  struct timespec t0, t1;
+  clock_gettime(CLOCK_MONOTONIC, &t0);
+  for (long i = 0; i < K; i++) {
+    const double s = simple ? 1.0 : 1.0 + 0.1 * sin(1e-4 * i), tn = simple ? 0.0 : 1e-4 * i;
+    const double a = 1e-4 * s, b = ell ? 0.5 * a : a;
+    double n[3], ax[3];
+    const double ct = cos(tn), st = sin(tn);
+    for (int k = 0; k < 3; k++) {
+      n[k] = ct * n0[k] + st * e2[k];
+      ax[k] = e1[k];
     }
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    const double ns = ((double)(t1.tv_sec - t0.tv_sec) * 1e9 + (double)(t1.tv_nsec - t0.tv_nsec)) / K;
-    printf("dc_cmd_step, %s%s: %.0f ns per call (the loop's own cost included; %.1f pieces on average%s)\n",
-           ell ? "ellipse b/a = 0.5" : "circle", c >= 2 ? ", twisting on" : "", ns, pieces / K, sum == 0.0 ? "" : "");
+    const dc_patch pa = patch_of(a, b, ax, 2.0 * s * s * s);
+    const double ang = simple ? 0.0 : 1e-3 * i, d = 1e-10 * sin(2e-3 * i), ca = cos(ang), sa = sin(ang);
+    double du[3];
+    for (int k = 0; k < 3; k++) du[k] = d * (ca * e1[k] + sa * e2[k]);
+    if (call) {
+      dc_cmd_step(&p, &m, &pa, n, du, d / a, 1e-6, &h, &o);
+      pc += h.nseg + h.nseg_t;
+    } else {
+      o.Ft[0] = du[0] + n[1] + pa.a;
+    }
+    sink = sink + o.Ft[0];
+  }
+  clock_gettime(CLOCK_MONOTONIC, &t1);
+  *pieces = pc / K;
+  return ((double)(t1.tv_sec - t0.tv_sec) * 1e9 + (double)(t1.tv_nsec - t0.tv_nsec)) / K;
+}
+
+static void timing(void)
+{
+  static const char *what[6] = {"circle", "ellipse b/a = 0.5", "circle, twisting on", "ellipse b/a = 0.5, twisting on",
+                                "circle, constant patch, one line", "ellipse, constant patch, one line"};
+  for (int c = 0; c < 6; c++) {
+    double pieces, dummy;
+    double best = HUGE_VAL;
+    for (int r = 0; r < 2; r++) best = fmin(best, timing_loop(c, 1, &pieces) - timing_loop(c, 0, &dummy));
+    printf("dc_cmd_step, %s: %.0f ns per call (%.1f pieces on average)\n", what[c], best, pieces);
   }
 }
 

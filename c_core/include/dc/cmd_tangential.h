@@ -108,9 +108,9 @@ extern "C" {
    pieces are replaced by one (linear in xi^2, keeping their force and their
    outer value exactly), least mean-square change first, down to one piece
    below the cap: a remembered turning point is lost, and the branches that
-   would have returned to it are approximate (tests: 12 nested turning
-   points, 1e-4 and 2e-3 mu F_n at most beyond the cap). Loading past the
-   largest turning point still returns to the virgin curve. */
+   would have returned to it are approximate (test: 12 nested turning
+   points, at most 1.4e-4 mu F_n beyond the cap). Loading past the largest
+   turning point still returns to the virgin curve. */
 #define DC_CMD_MAX_SEG 8
 #define DC_CMD_MAX_TURNS (DC_CMD_MAX_SEG - 2)
 
