@@ -602,8 +602,8 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   double chk = ((nf(a) + nf(b)) + (nf(Fb) + nf(patch->formed))) +
                ((nf(patch->axis[0]) + nf(patch->axis[1])) + (nf(patch->axis[2]) + nf(mu))) +
                ((nf(n[0]) + nf(n[1])) + (nf(n[2]) + nf(du[0]))) + ((nf(du[1]) + nf(du[2])) + (nf(m->s0) + nf(m->s1))) +
-               ((nf(h->a_prev) + nf(h->nseg)) + (nf(h->nseg_t) + nf(h->n_prev[0]))) + (nf(h->n_prev[1]) + nf(h->n_prev[2]));
-  if (p->twisting) chk += nf(dphi);
+               ((nf(h->a_prev) + nf(h->nseg)) + nf(h->n_prev[0])) + (nf(h->n_prev[1]) + nf(h->n_prev[2]));
+  if (p->twisting) chk += nf(dphi) + nf(h->nseg_t);
   if (p->dissipation) chk += nf(dt) + nf(p->t_visc);
   if (chk != 0.0) return DC_EDOM;   /* NaN: an input is not finite */
   if (!(mu >= 0.0 && p->t_visc >= 0.0 && (p->dissipation == 0 || p->dissipation == 1) &&
@@ -612,9 +612,10 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     return DC_EDOM;
   const double nn = dot3(n, n);
   if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
-  const int ns = (int)h->nseg, nt = (int)h->nseg_t;
-  if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->nseg_t == (double)nt && nt >= 0 &&
-        nt <= DC_CMD_MAX_SEG && h->a_prev >= 0.0))
+  /* without twisting the twist part of h (from nseg_t on) is neither read nor written */
+  const int ns = (int)h->nseg, nt = p->twisting ? (int)h->nseg_t : 0;
+  if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
+        (!p->twisting || (h->nseg_t == (double)nt && nt >= 0 && nt <= DC_CMD_MAX_SEG))))
     return DC_EDOM;
   int order = 1;   /* breakpoints increase from 0 to 1 */
   for (int j = 0; j < ns; j++) {
@@ -635,7 +636,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
 
   /* ---- not formed, or no area: the history starts afresh */
   if (patch->formed == 0.0 || a == 0.0) {
-    memset(h, 0, sizeof *h);
+    memset(h, 0, p->twisting ? sizeof *h : DC_CMD_FORCE_NFIELDS * sizeof(double));
     memset(out, 0, sizeof *out);
     return DC_OK;
   }
@@ -797,11 +798,6 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
       h->t1[j] = pt[j].v1[0];
     }
     for (int j = ntw; j < DC_CMD_MAX_SEG; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
-  } else {   /* not read: kept at 0 */
-    h->nseg_t = 0.0;
-    memset(h->xi_t, 0, sizeof h->xi_t);
-    memset(h->t0, 0, sizeof h->t0);
-    memset(h->t1, 0, sizeof h->t1);
   }
   return DC_OK;
 }

@@ -53,16 +53,6 @@ public:
     history_offset(-1), ntypes(0)
   {
     patch.request(c);
-    /* LIGGGHTS' contact-history pages hold neigh_modify one x (values per
-       contact); with this many values the default page (100000) is too
-       small and LIGGGHTS fails without a message: grow it (the margin
-       covers the other models' values) */
-    const int need = neighbor->oneatom * (DC_CMD_HISTORY_NFIELDS + 40);
-    if (neighbor->pgsize < need) neighbor->pgsize = need;
-    for (int k = 0; k < DC_CMD_HISTORY_NFIELDS; k++) {
-      const int off = hsetup->add_history_value(dc_cmd_history[k].name, dc_cmd_history[k].flips ? "1" : "0");
-      if (k == 0) history_offset = off;
-    }
   }
 
   void registerSettings(Settings &settings)
@@ -71,7 +61,22 @@ public:
     settings.registerOnOff("cmdDissipation", dissipation, false);
   }
 
-  void postSettings(IContactHistorySetup *, ContactModelBase *c) { patch.setup(lmp, c); }
+  /* The law's history, without the twist profile unless cmdTwisting is on
+     (the law does not touch it then). LIGGGHTS' contact-history pages hold
+     neigh_modify one x (values per contact); the default page (100000) is
+     too small for this many and LIGGGHTS fails without a message: grow it
+     (the margin covers the other models' values). */
+  void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
+  {
+    patch.setup(lmp, c);
+    const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
+    const int need = neighbor->oneatom * (nfields + 40);
+    if (neighbor->pgsize < need) neighbor->pgsize = need;
+    for (int k = 0; k < nfields; k++) {
+      const int off = hsetup->add_history_value(dc_cmd_history[k].name, dc_cmd_history[k].flips ? "1" : "0");
+      if (k == 0) history_offset = off;
+    }
+  }
 
   void connectToProperties(PropertyRegistry &registry)
   {
@@ -123,7 +128,7 @@ public:
   {
     dc_cmd_state *h = state(scdata);
     if (!patch.formed(scdata) || scdata.is_non_spherical) {
-      if (h->a_prev != 0.0) memset(h, 0, sizeof *h);
+      if (h->a_prev != 0.0) memset(h, 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
       return;
     }
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
@@ -171,7 +176,7 @@ private:
     dc_cmd_state *h = state(sidata);
     dc_cmd_state scratch;
     if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
-      scratch = *h;
+      memcpy(&scratch, h, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
       h = &scratch;
     }
     dc_cmd_out out;

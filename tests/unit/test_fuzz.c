@@ -1592,7 +1592,12 @@ static void fuzz_cmd(void)
     SENTINEL(o);
     const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, dt, &h, &o);
     const int untouched = UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h);
-    int fin_ok = FIN(o) && FIN(h) && h.nseg >= 0.0 && h.nseg <= DC_CMD_MAX_SEG && h.nseg_t >= 0.0 && h.nseg_t <= DC_CMD_MAX_SEG;
+    /* without twisting the twist part of h is neither read nor written */
+    int fin_ok = FIN(o) && h.nseg >= 0.0 && h.nseg <= DC_CMD_MAX_SEG;
+    for (int k = 0; k < (p.twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS); k++)
+      fin_ok &= isfinite(((const double *)&h)[k]);
+    if (p.twisting) fin_ok &= h.nseg_t >= 0.0 && h.nseg_t <= DC_CMD_MAX_SEG;
+    else fin_ok &= !memcmp(&h.nseg_t, &h0.nseg_t, sizeof h - DC_CMD_FORCE_NFIELDS * sizeof(double));
     if (st == DC_OK && !bad && pa.formed != 0.0) {
       /* |Ft| <= mu F_bound, |Mt| <= M_s, Ft in the plane */
       const double lim = p.mu * pa.F_bound, F = hypot(hypot(o.Ft[0], o.Ft[1]), o.Ft[2]);

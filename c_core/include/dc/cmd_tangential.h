@@ -95,6 +95,7 @@
 #ifndef DC_CMD_TANGENTIAL_H
 #define DC_CMD_TANGENTIAL_H
 
+#include <stddef.h>
 #include "dc/contract.h"
 #include "dc/mindlin.h"
 
@@ -143,6 +144,9 @@ typedef struct {
 /* Its field table (dc/contract.h), in struct order: a wrapper registers
    DC_CMD_HISTORY_NFIELDS doubles and views them as a dc_cmd_state. */
 enum { DC_CMD_HISTORY_NFIELDS = (int)(sizeof(dc_cmd_state) / sizeof(double)) };
+/* Without twisting only the first DC_CMD_FORCE_NFIELDS fields (up to
+   nseg_t) are read or written: a wrapper may store just those. */
+enum { DC_CMD_FORCE_NFIELDS = (int)(offsetof(dc_cmd_state, nseg_t) / sizeof(double)) };
 extern const dc_history_field dc_cmd_history[DC_CMD_HISTORY_NFIELDS];
 
 /* Output of one step. */
