@@ -367,7 +367,8 @@ DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
         }
       }
     }
-    pc[no++] = *p;
+    if (no != i) pc[no] = *p;
+    no++;
   }
   return no;
 }
@@ -617,11 +618,30 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
         (!p->twisting || (h->nseg_t == (double)nt && nt >= 0 && nt <= DC_CMD_MAX_SEG))))
     return DC_EDOM;
+  /* the stored pieces: the values of u0 and u1 (3 ns doubles each, in a
+     row) in independent sums; the breakpoints finite and increasing to 1
+     in one comparison chain (a NaN fails every comparison) */
   int order = 1;   /* breakpoints increase from 0 to 1 */
-  for (int j = 0; j < ns; j++) {
-    chk += (nf(h->xi[j]) + (nf(h->u0[j][0]) + nf(h->u0[j][1]))) +
-           ((nf(h->u0[j][2]) + nf(h->u1[j][0])) + (nf(h->u1[j][1]) + nf(h->u1[j][2])));
-    order &= h->xi[j] > (j ? h->xi[j - 1] : 0.0) && h->xi[j] <= 1.0;
+  {
+    const double *v0 = &h->u0[0][0], *v1 = &h->u1[0][0];
+    const int nv = 3 * ns;
+    double c0 = 0.0, c1 = 0.0, c2 = 0.0, c3 = 0.0;
+    int i = 0;
+    for (; i + 1 < nv; i += 2) {
+      c0 += nf(v0[i]);
+      c1 += nf(v0[i + 1]);
+      c2 += nf(v1[i]);
+      c3 += nf(v1[i + 1]);
+    }
+    if (i < nv) c0 += nf(v0[i]) + nf(v1[i]);
+    double xp = 0.0;
+    for (int j = 0; j < ns; j++) {
+      const double x = h->xi[j];
+      order &= x > xp;
+      xp = x;
+    }
+    order &= ns == 0 || xp <= 1.0;   /* increasing, so all <= 1 (and finite) */
+    chk += (c0 + c1) + (c2 + c3);
   }
   if (p->twisting)
     for (int j = 0; j < nt; j++) {
@@ -763,9 +783,16 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
 
   /* ---- results finite, then commit */
   double fin = ((nf(F[0]) + nf(F[1])) + (nf(F[2]) + nf(kt))) + ((nf(stick) + nf(Mt)) + nf(kr));
-  for (int j = 0; j < nfp; j++)
-    fin += (nf(pf[j].x1) + (nf(pf[j].v0[0]) + nf(pf[j].v0[1]))) +
-           ((nf(pf[j].v0[2]) + nf(pf[j].v1[0])) + (nf(pf[j].v1[1]) + nf(pf[j].v1[2])));
+  {
+    double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0;
+    for (int j = 0; j < nfp; j++) {
+      f0 += nf(pf[j].x1) + nf(pf[j].v0[0]);
+      f1 += nf(pf[j].v0[1]) + nf(pf[j].v0[2]);
+      f2 += nf(pf[j].v1[0]) + nf(pf[j].v1[1]);
+      f3 += nf(pf[j].v1[2]);
+    }
+    fin += (f0 + f1) + (f2 + f3);
+  }
   for (int j = 0; j < ntw; j++) fin += nf(pt[j].x1) + (nf(pt[j].v0[0]) + nf(pt[j].v1[0]));
   if (fin != 0.0) return DC_ERANGE;
 
