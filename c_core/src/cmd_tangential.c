@@ -574,14 +574,14 @@ static inline double dot3(const double *a, const double *b) { return a[0] * b[0]
 /* Turns v (normal to a) with the rotation taking the unit a to the unit b
    (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
    c = a.b, w = a x b), then removes what is left along b. */
-static inline void turn(const double *w, double c, double ic, const double *b, double *v)
+static inline void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
 {
   const double wv = dot3(w, v) * ic;
   double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
                  c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
                  c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
   const double rn = dot3(r, b);
-  for (int k = 0; k < 3; k++) v[k] = r[k] - rn * b[k];
+  for (int k = 0; k < 3; k++) out[k] = r[k] - rn * b[k];
 }
 
 /* Projects v onto the plane normal to b, keeping |v| (a turn by nearly pi). */
@@ -700,19 +700,19 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     const double *np0 = h->n_prev;
     const double c = dot3(np0, nh);
     if (np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
-      memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
-      memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
       pu0 = &U0[0][0];
       pu1 = &U1[0][0];
-      if (c > -0.999) {
+      if (c > -0.999) {   /* turned straight from h into the copies */
         const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
                              np0[0] * nh[1] - np0[1] * nh[0]};
         const double ic = 1.0 / (1.0 + c);
         for (int j = 0; j < nsu; j++) {
-          turn(w, c, ic, nh, U0[j]);
-          turn(w, c, ic, nh, U1[j]);
+          turn(w, c, ic, nh, h->u0[j], U0[j]);
+          turn(w, c, ic, nh, h->u1[j], U1[j]);
         }
       } else {
+        memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
+        memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
         for (int j = 0; j < nsu; j++) {
           project_keep(nh, U0[j]);
           project_keep(nh, U1[j]);
