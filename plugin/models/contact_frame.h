@@ -68,6 +68,31 @@ inline void closeTangentialVelocity(const SurfacesCloseData &d, const double *en
   vtr[2] = vr[2] - vn * en[2] - (w[0] * en[1] - w[1] * en[0]);
 }
 
+/* The same for a non-spherical contact handed to surfacesClose (the normal
+   model's gap code has set en and contact_point): the relative velocity of
+   the material points at the contact point, less its normal part. */
+inline void closeContactPointVelocity(const SurfacesCloseData &d, const double *en, const double *cp, double **x,
+                                      double vtr[3])
+{
+  double v[3];
+  const double ri[3] = {cp[0] - x[d.i][0], cp[1] - x[d.i][1], cp[2] - x[d.i][2]};
+  const double *wi = d.omega_i;
+  for (int k = 0; k < 3; k++) v[k] = d.v_i[k];
+  v[0] += wi[1] * ri[2] - wi[2] * ri[1];
+  v[1] += wi[2] * ri[0] - wi[0] * ri[2];
+  v[2] += wi[0] * ri[1] - wi[1] * ri[0];
+  for (int k = 0; k < 3; k++) v[k] -= d.v_j[k];
+  if (!d.is_wall) {
+    const double rj[3] = {cp[0] - x[d.j][0], cp[1] - x[d.j][1], cp[2] - x[d.j][2]};
+    const double *wj = d.omega_j;
+    v[0] -= wj[1] * rj[2] - wj[2] * rj[1];
+    v[1] -= wj[2] * rj[0] - wj[0] * rj[2];
+    v[2] -= wj[0] * rj[1] - wj[1] * rj[0];
+  }
+  const double vn = v[0] * en[0] + v[1] * en[1] + v[2] * en[2];
+  for (int k = 0; k < 3; k++) vtr[k] = v[k] - vn * en[k];
+}
+
 /* Adds Fn along en to i (and -Fn to j), with the torque of a force off the
    centre line for non-spherical particles; walls scale by area_ratio. */
 inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, double **x,

@@ -127,14 +127,21 @@ public:
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     dc_cmd_state *h = state(scdata);
-    if (!patch.formed(scdata) || scdata.is_non_spherical) {
+    if (!patch.formed(scdata)) {
       if (h->a_prev != 0.0) memset(h, 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
       return;
     }
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-    /* the normal model has set en (and, for pairs, the overlap from r) */
-    const double delta = sidata.is_wall ? sidata.deltan : sidata.radsum - sqrt(sidata.rsq);
     double vtr[3];
+    if (scdata.is_non_spherical) {
+      /* superquadrics: the normal model's gap code has set en and the contact point */
+      closeContactPointVelocity(sidata, sidata.en, sidata.contact_point, atom->x, vtr);
+      if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+      step(sidata, vtr, 0.0, 0.0, i_forces, j_forces);
+      return;
+    }
+    /* spheres: the normal model has set en (and, for pairs, the overlap from r) */
+    const double delta = sidata.is_wall ? sidata.deltan : sidata.radsum - sqrt(sidata.rsq);
     closeTangentialVelocity(sidata, sidata.en, delta, vtr);
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     step(sidata, vtr, sidata.radi - 0.5 * delta, sidata.radj - 0.5 * delta, i_forces, j_forces);

@@ -8,10 +8,17 @@ tension (overlap -0.4 um, the neck formed) and sheared (inputs/adhesive_shear):
 - the normal force stays the JKR force;
 - stock `tangential history` gives no friction in tension (its contact
   ends when the surfaces part);
+- superquadrics (in.adhesive_shear_superquadric, two ellipsoid tips): the
+  friction acts in tension too and slides at mu (F + 2 F_pulloff) of the
+  elliptic JKR contact (F and F_pulloff from dclaw, i.e. c_core's law: this
+  checks the plumbing) within 2%: the force is split along the centre line,
+  while the contact normal of the offset tips tilts by about dy/(R_i + R_j)
+  and moves up to 1.2% of the normal force into the measured friction;
 - the cmd_tangential run against its committed reference.
 Usage: check_adhesive_shear.py WORKDIR [--update]"""
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -53,6 +60,28 @@ c.true(worst < 1e-6, "sliding in tension at mu (F + 3 pi w R*) (%.6g N at the he
        % (F_slide, worst))
 c.true(max(split(r)[1] for r in runs["history"]) < 1e-3 * F_slide,
        "stock tangential history: no friction in tension (max %.3g N)" % max(split(r)[1] for r in runs["history"]))
+# superquadrics: relative radii of the two tips (each b^2/a = 0.24 mm across,
+# c^2/a = 0.667 mm along z; halved for the pair)
+for tmodel in ("cmd_tangential", "history"):
+    d = os.path.join(work, "sq_" + tmodel)
+    run("adhesive_shear/in.adhesive_shear_superquadric", d, variables={"tmodel": tmodel}, tag=tmodel)
+    runs["sq_" + tmodel] = [r for r in table(os.path.join(d, "shear.txt")) if r[2] > 0]
+dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
+                     "..", "c_core", "dclaw")
+law = ["--R1", repr(0.5 * 1e-3 ** 2 / 1.5e-3), "--R2", repr(0.5 * 0.6e-3 ** 2 / 1.5e-3), "--Estar", repr(Estar), "--w", repr(w)]
+summary = subprocess.run([dclaw, "jkr_elliptic"] + law + ["--summary", "1"], capture_output=True, text=True).stdout.split()
+F_pull = float(summary[1].split(",")[4])
+state = subprocess.run([dclaw, "jkr_elliptic"] + law + ["--delta_min", "-2e-7", "--delta_max", "-2e-7", "--n", "1"],
+                       capture_output=True, text=True).stdout.split()
+F_sq = float(state[1].split(",")[2])
+slide = [split(r)[1] for r in runs["sq_cmd_tangential"][len(runs["sq_cmd_tangential"]) // 2:]]
+want = mu * (F_sq + 2 * F_pull)
+c.true(F_sq < 0 and all(abs(x / want - 1) < 2e-2 for x in slide),
+       "superquadrics in tension (F = %.4g N): friction slides at mu (F + 2 F_pulloff) = %.4g N (measured %.4g .. %.4g)"
+       % (F_sq, want, min(slide), max(slide)))
+c.true(max(split(r)[1] for r in runs["sq_history"]) < 2e-2 * want,
+       "superquadrics, stock tangential history: no friction in tension (%.3g N, the normal force's tilt)"
+       % max(split(r)[1] for r in runs["sq_history"]))
 ref = os.path.join(ROOT, "inputs", "adhesive_shear", "reference", "shear.txt")
 if update:
     save_reference(os.path.join(work, "cmd_tangential", "shear.txt"), ref, EVERY)
