@@ -127,6 +127,17 @@ static int check_read_tagged_row(FILE *f, char *tag, size_t ntag, double *v, int
   return check_read_fields_(f, tag, ntag, v, n);
 }
 
+/* The next row tagged want, rows with other tags skipped; the count of
+   numbers read as check_read_tagged_row gives it, 0 at the end. */
+static int check_next_tagged_row(FILE *f, const char *want, double *v, int n)
+{
+  char tag[32];
+  int k;
+  while ((k = check_read_tagged_row(f, tag, sizeof tag, v, n)) > 0)
+    if (!strcmp(tag, want)) return k;
+  return 0;
+}
+
 /* Opens a committed reference table (path relative to tests/reference). */
 static FILE *check_open_reference(const char *name)
 {

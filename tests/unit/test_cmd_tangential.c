@@ -144,12 +144,10 @@ static void test_ellipse_noslip(void)
   if (!f) return;
   double n[3], e1[3], e2[3];
   frame(n, e1, e2);
-  char tag[16];
   double v[8];
   int rows = 0;
   double worst_k = 0.0, worst_a = 0.0;
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
-    if (strcmp(tag, "noslip")) continue;
+  while (check_next_tagged_row(f, "noslip", v, 8) > 0) {
     const double g = v[0], nu = v[1], th = v[2], k = v[3], psi = v[4];
     const dc_mindlin_pair m = {1.0, nu};
     dc_cmd_params p = {1e6, 0.0, 0, 0};   /* slip negligible at delta = 1e-9 */
@@ -183,15 +181,13 @@ static void test_ellipse_microslip(void)
   if (!f) return;
   double n[3], e1[3], e2[3];
   frame(n, e1, e2);
-  char tag[16];
   double v[8];
   int rows = 0;
   double worst = 0.0;
   dc_cmd_state h;
   dc_cmd_out o;
   double dprev = 0.0, key[3] = {-1, -1, -1};
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
-    if (strcmp(tag, "micro")) continue;
+  while (check_next_tagged_row(f, "micro", v, 8) > 0) {
     const double g = v[0], nu = v[1], th = v[2], psi = v[3], F = v[5], d = v[6];
     const dc_mindlin_pair m = {1.0, nu};
     dc_cmd_params p = {0.5, 0.0, 0, 0};
@@ -225,11 +221,9 @@ static void test_twist(void)
   if (!f) return;
   double n[3], e1[3], e2[3];
   frame(n, e1, e2);
-  char tag[16];
   double v[8];
   int rows = 0;
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 8) > 0) {
-    if (strcmp(tag, "twist")) continue;
+  while (check_next_tagged_row(f, "twist", v, 8) > 0) {
     const double g = v[0], nu = v[1];
     const dc_mindlin_pair m = {1.0, nu};
     double k, Ms;
@@ -288,11 +282,9 @@ static void test_nested(void)
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
-  char tag[16];
   double v[4], d = 0.0, worst = 0.0;
   int rows = 0, maxseg = 0;
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0) {
-    if (strcmp(tag, "nested")) continue;
+  while (check_next_tagged_row(f, "nested", v, 4) > 0) {
     for (int i = 0; i < 10; i++) step_along(&p, &m, &pa, n, e1, (v[0] - d) / 10, &h, &o);
     d = v[0];
     worst = fmax(worst, fabs(dot3(o.Ft, e1) - v[1]));
@@ -495,19 +487,16 @@ static void test_oblique(void)
   if (!f) return;
   const double Xi = 1.0, Ts = 0.5;   /* Theta = mu/Xi = 1/2, Lambda* = 1/2 */
   const double Y = -1.0 / 3.0, ends[5][2] = {{0, Ts}, {Ts, Y * Ts}, {Y * Ts, -Ts}, {-Ts, Ts}, {Ts, -Ts}};
-  char tag[16];
   double v[4], E75 = 0.0, worst = 0.0;
   int rows = 0;
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0)
-    if (!strcmp(tag, "energy75")) E75 = v[2];
+  if (check_next_tagged_row(f, "energy75", v, 4) > 0) E75 = v[2];
   rewind(f);
   /* phases as in the generator, 8 rows each; 32 force steps per row */
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
   double d = 0.0, Tprev = 0.0;
-  while (check_read_tagged_row(f, tag, sizeof tag, v, 4) > 0) {
-    if (strcmp(tag, "oblique")) continue;
+  while (check_next_tagged_row(f, "oblique", v, 4) > 0) {
     const int ph = (int)v[0];
     const double T = v[1];
     for (int i = 1; i <= 32; i++) d += vn_goto(&h, &o, Tprev + (T - Tprev) * i / 32, Xi);
