@@ -9,30 +9,18 @@
 
 _Static_assert(DC_CMD_MAX_SEG == 8, "the field table below lists 8 pieces");
 _Static_assert(sizeof(dc_cmd_state) == DC_CMD_HISTORY_NFIELDS * sizeof(double), "plain doubles");
+_Static_assert(sizeof(dc_cmd_piece) == 7 * sizeof(double) && sizeof(dc_cmd_twist_piece) == 3 * sizeof(double),
+               "pieces of 1 + 2 dim doubles");
 
+#define CMD_PIECE(j) {"cmd_xi_" #j, 0}, {"cmd_u0_" #j "_x", 1}, {"cmd_u0_" #j "_y", 1}, {"cmd_u0_" #j "_z", 1}, \
+    {"cmd_u1_" #j "_x", 1}, {"cmd_u1_" #j "_y", 1}, {"cmd_u1_" #j "_z", 1}
+#define CMD_TWIST_PIECE(j) {"cmd_xi_t_" #j, 0}, {"cmd_t0_" #j, 0}, {"cmd_t1_" #j, 0}
 const dc_history_field dc_cmd_history[DC_CMD_HISTORY_NFIELDS] = {
   {"cmd_n_prev_x", 1}, {"cmd_n_prev_y", 1}, {"cmd_n_prev_z", 1}, {"cmd_a_prev", 0}, {"cmd_nseg", 0},
-  {"cmd_xi_0", 0}, {"cmd_xi_1", 0}, {"cmd_xi_2", 0}, {"cmd_xi_3", 0}, {"cmd_xi_4", 0}, {"cmd_xi_5", 0}, {"cmd_xi_6", 0}, {"cmd_xi_7", 0},
-  {"cmd_u0_0_x", 1}, {"cmd_u0_0_y", 1}, {"cmd_u0_0_z", 1},
-  {"cmd_u0_1_x", 1}, {"cmd_u0_1_y", 1}, {"cmd_u0_1_z", 1},
-  {"cmd_u0_2_x", 1}, {"cmd_u0_2_y", 1}, {"cmd_u0_2_z", 1},
-  {"cmd_u0_3_x", 1}, {"cmd_u0_3_y", 1}, {"cmd_u0_3_z", 1},
-  {"cmd_u0_4_x", 1}, {"cmd_u0_4_y", 1}, {"cmd_u0_4_z", 1},
-  {"cmd_u0_5_x", 1}, {"cmd_u0_5_y", 1}, {"cmd_u0_5_z", 1},
-  {"cmd_u0_6_x", 1}, {"cmd_u0_6_y", 1}, {"cmd_u0_6_z", 1},
-  {"cmd_u0_7_x", 1}, {"cmd_u0_7_y", 1}, {"cmd_u0_7_z", 1},
-  {"cmd_u1_0_x", 1}, {"cmd_u1_0_y", 1}, {"cmd_u1_0_z", 1},
-  {"cmd_u1_1_x", 1}, {"cmd_u1_1_y", 1}, {"cmd_u1_1_z", 1},
-  {"cmd_u1_2_x", 1}, {"cmd_u1_2_y", 1}, {"cmd_u1_2_z", 1},
-  {"cmd_u1_3_x", 1}, {"cmd_u1_3_y", 1}, {"cmd_u1_3_z", 1},
-  {"cmd_u1_4_x", 1}, {"cmd_u1_4_y", 1}, {"cmd_u1_4_z", 1},
-  {"cmd_u1_5_x", 1}, {"cmd_u1_5_y", 1}, {"cmd_u1_5_z", 1},
-  {"cmd_u1_6_x", 1}, {"cmd_u1_6_y", 1}, {"cmd_u1_6_z", 1},
-  {"cmd_u1_7_x", 1}, {"cmd_u1_7_y", 1}, {"cmd_u1_7_z", 1},
+  CMD_PIECE(0), CMD_PIECE(1), CMD_PIECE(2), CMD_PIECE(3), CMD_PIECE(4), CMD_PIECE(5), CMD_PIECE(6), CMD_PIECE(7),
   {"cmd_nseg_t", 0},
-  {"cmd_xi_t_0", 0}, {"cmd_xi_t_1", 0}, {"cmd_xi_t_2", 0}, {"cmd_xi_t_3", 0}, {"cmd_xi_t_4", 0}, {"cmd_xi_t_5", 0}, {"cmd_xi_t_6", 0}, {"cmd_xi_t_7", 0},
-  {"cmd_t0_0", 0}, {"cmd_t0_1", 0}, {"cmd_t0_2", 0}, {"cmd_t0_3", 0}, {"cmd_t0_4", 0}, {"cmd_t0_5", 0}, {"cmd_t0_6", 0}, {"cmd_t0_7", 0},
-  {"cmd_t1_0", 0}, {"cmd_t1_1", 0}, {"cmd_t1_2", 0}, {"cmd_t1_3", 0}, {"cmd_t1_4", 0}, {"cmd_t1_5", 0}, {"cmd_t1_6", 0}, {"cmd_t1_7", 0},
+  CMD_TWIST_PIECE(0), CMD_TWIST_PIECE(1), CMD_TWIST_PIECE(2), CMD_TWIST_PIECE(3),
+  CMD_TWIST_PIECE(4), CMD_TWIST_PIECE(5), CMD_TWIST_PIECE(6), CMD_TWIST_PIECE(7),
 };
 
 int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err)
@@ -54,11 +42,10 @@ int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err)
 /* ------------------------------------------------------------------ */
 /* Range-safe products (plain when the result is a normal double).      */
 
-/* c x y z / (d1 d2), factors >= 0, d1, d2 > 0 */
-static double pq(double c, double x, double y, double z, double d1, double d2)
+/* c x y z / (d1 d2) by exponent and mantissa, for when the plain product
+   is not a normal double */
+static double pq_scaled(double c, double x, double y, double z, double d1, double d2)
 {
-  const double p = c * x * y * z / (d1 * d2);
-  if (p >= DBL_MIN && p <= DBL_MAX) return p;
   if (c == 0.0 || x == 0.0 || y == 0.0 || z == 0.0) return 0.0;
   const double f[4] = {c, x, y, z};
   double m = 1.0;
@@ -74,6 +61,14 @@ static double pq(double c, double x, double y, double z, double d1, double d2)
   m /= frexp(d2, &k);
   e -= k;
   return ldexp(m, e);
+}
+
+/* c x y z / (d1 d2), factors >= 0, d1, d2 > 0 */
+static inline double pq(double c, double x, double y, double z, double d1, double d2)
+{
+  const double p = c * x * y * z / (d1 * d2);
+  if (p >= DBL_MIN && p <= DBL_MAX) return p;
+  return pq_scaled(c, x, y, z, d1, d2);
 }
 
 /* ------------------------------------------------------------------ */
@@ -493,12 +488,12 @@ DC_INLINE int cap(int dim, piece *pc, int np)
   return np;
 }
 
-/* One step of a profile with dim components: the stored pieces (xi,
-   u0, u1; stride dim) rescaled by r = a_prev / a, the increment d for the
+/* One step of a profile with dim components: the stored pieces (xi, u0,
+   u1: 1 + 2 dim doubles each) rescaled by r = a_prev / a, the increment d for the
    stuck springs, entering rim, clamp, group, tidy, cap. Returns the number
    of pieces in out; *stick and I = int_0^1 u dxi. */
-DC_INLINE int profile_step(int dim, int n, const double *xi, const double *u0, const double *u1, double r,
-                        const double *d, double L0, piece *out, double *stick, double *I)
+DC_INLINE int profile_step(int dim, int n, const double *seg, double r, const double *d, double L0, piece *out,
+                           double *stick, double *I)
 {
   piece trial[MAXP];
   int np = 0, entered = 0;
@@ -508,11 +503,12 @@ DC_INLINE int profile_step(int dim, int n, const double *xi, const double *u0, c
     double x0 = 0.0;
     for (int j = 0; j < n; j++) {
       const double xs = x0;
-      double xe = xi[j] * r;
+      const double *sj = seg + (1 + 2 * dim) * j;
+      double xe = sj[0] * r;
       x0 = xe;
       if (xs >= 1.0) break;
       double p0[3], p1[3];
-      const double *a0 = u0 + dim * j, *a1 = u1 + dim * j;
+      const double *a0 = sj + 1, *a1 = sj + 1 + dim;
       if (xe > 1.0) {
         const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
         for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
@@ -555,16 +551,16 @@ DC_INLINE int profile_step(int dim, int n, const double *xi, const double *u0, c
   return no;
 }
 
-static int profile_step3(int n, const double *xi, const double *u0, const double *u1, double r, const double *d,
-                         double L0, piece *out, double *stick, double *I)
+static int profile_step3(int n, const dc_cmd_piece *seg, double r, const double *d, double L0, piece *out,
+                         double *stick, double *I)
 {
-  return profile_step(3, n, xi, u0, u1, r, d, L0, out, stick, I);
+  return profile_step(3, n, &seg[0].xi, r, d, L0, out, stick, I);
 }
 
-static int profile_step1(int n, const double *xi, const double *u0, const double *u1, double r, const double *d,
-                         double L0, piece *out, double *stick, double *I)
+static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const double *d, double L0, piece *out,
+                         double *stick, double *I)
 {
-  return profile_step(1, n, xi, u0, u1, r, d, L0, out, stick, I);
+  return profile_step(1, n, &seg[0].xi, r, d, L0, out, stick, I);
 }
 
 /* ------------------------------------------------------------------ */
@@ -574,7 +570,7 @@ static inline double dot3(const double *a, const double *b) { return a[0] * b[0]
 /* Turns v (normal to a) with the rotation taking the unit a to the unit b
    (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
    c = a.b, w = a x b), then removes what is left along b. */
-static inline void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
+DC_INLINE void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
 {
   const double wv = dot3(w, v) * ic;
   double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
@@ -618,35 +614,27 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
         (!p->twisting || (h->nseg_t == (double)nt && nt >= 0 && nt <= DC_CMD_MAX_SEG))))
     return DC_EDOM;
-  /* the stored pieces: the values of u0 and u1 (3 ns doubles each, in a
-     row) in independent sums; the breakpoints finite and increasing to 1
-     in one comparison chain (a NaN fails every comparison) */
+  /* the stored pieces: their values in independent sums; the
+     breakpoints finite and increasing to 1 in one comparison chain (a NaN
+     fails every comparison) */
   int order = 1;   /* breakpoints increase from 0 to 1 */
   {
-    const double *v0 = &h->u0[0][0], *v1 = &h->u1[0][0];
-    const int nv = 3 * ns;
-    double c0 = 0.0, c1 = 0.0, c2 = 0.0, c3 = 0.0;
-    int i = 0;
-    for (; i + 1 < nv; i += 2) {
-      c0 += nf(v0[i]);
-      c1 += nf(v0[i + 1]);
-      c2 += nf(v1[i]);
-      c3 += nf(v1[i + 1]);
-    }
-    if (i < nv) c0 += nf(v0[i]) + nf(v1[i]);
-    double xp = 0.0;
+    double c0 = 0.0, c1 = 0.0, c2 = 0.0, xp = 0.0;
     for (int j = 0; j < ns; j++) {
-      const double x = h->xi[j];
-      order &= x > xp;
-      xp = x;
+      const dc_cmd_piece *q = &h->seg[j];
+      c0 += nf(q->u0[0]) + nf(q->u1[0]);
+      c1 += nf(q->u0[1]) + nf(q->u1[1]);
+      c2 += nf(q->u0[2]) + nf(q->u1[2]);
+      order &= q->xi > xp;
+      xp = q->xi;
     }
     order &= ns == 0 || xp <= 1.0;   /* increasing, so all <= 1 (and finite) */
-    chk += (c0 + c1) + (c2 + c3);
+    chk += (c0 + c1) + c2;
   }
   if (p->twisting)
     for (int j = 0; j < nt; j++) {
-      chk += nf(h->xi_t[j]) + (nf(h->t0[j]) + nf(h->t1[j]));
-      order &= h->xi_t[j] > (j ? h->xi_t[j - 1] : 0.0) && h->xi_t[j] <= 1.0;
+      chk += nf(h->seg_t[j].xi) + (nf(h->seg_t[j].t0) + nf(h->seg_t[j].t1));
+      order &= h->seg_t[j].xi > (j ? h->seg_t[j - 1].xi : 0.0) && h->seg_t[j].xi <= 1.0;
     }
   if (chk != 0.0 || !order) return DC_EDOM;
 
@@ -693,29 +681,28 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   /* ---- the stored force profile, turned with the plane */
   const int fresh = !(h->a_prev > 0.0);
   const double r = fresh ? 1.0 : h->a_prev / a;
-  double U0[DC_CMD_MAX_SEG][3], U1[DC_CMD_MAX_SEG][3];
+  dc_cmd_piece S[DC_CMD_MAX_SEG];
   const int nsu = fresh ? 0 : ns;
-  const double *pu0 = &h->u0[0][0], *pu1 = &h->u1[0][0];
+  const dc_cmd_piece *seg = h->seg;
   if (nsu > 0) {
     const double *np0 = h->n_prev;
     const double c = dot3(np0, nh);
     if (np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
-      pu0 = &U0[0][0];
-      pu1 = &U1[0][0];
+      seg = S;
       if (c > -0.999) {   /* turned straight from h into the copies */
         const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
                              np0[0] * nh[1] - np0[1] * nh[0]};
         const double ic = 1.0 / (1.0 + c);
         for (int j = 0; j < nsu; j++) {
-          turn(w, c, ic, nh, h->u0[j], U0[j]);
-          turn(w, c, ic, nh, h->u1[j], U1[j]);
+          S[j].xi = h->seg[j].xi;
+          turn(w, c, ic, nh, h->seg[j].u0, S[j].u0);
+          turn(w, c, ic, nh, h->seg[j].u1, S[j].u1);
         }
       } else {
-        memcpy(U0, h->u0, sizeof(double) * 3 * nsu);
-        memcpy(U1, h->u1, sizeof(double) * 3 * nsu);
+        memcpy(S, h->seg, sizeof(dc_cmd_piece) * nsu);
         for (int j = 0; j < nsu; j++) {
-          project_keep(nh, U0[j]);
-          project_keep(nh, U1[j]);
+          project_keep(nh, S[j].u0);
+          project_keep(nh, S[j].u1);
         }
       }
     }
@@ -726,7 +713,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   const double L0 = pq(0.75 / M_PI * cm, mu, Fb, m->s0, a, 1.0);
   piece pf[MAXP];
   double stick, I[3];
-  const int nfp = profile_step3(nsu, h->xi, pu0, pu1, r, d, L0, pf, &stick, I);
+  const int nfp = profile_step3(nsu, seg, r, d, L0, pf, &stick, I);
   double F[3] = {k_major * I[0], k_major * I[1], k_major * I[2]};
   {
     const double fn = dot3(F, nh);
@@ -775,7 +762,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     const double Ms = pq(0.375 * E, mu, Fb, a, 1.0, 1.0);
     const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * f), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
     double st, It;
-    ntw = profile_step1(fresh ? 0 : nt, h->xi_t, h->t0, h->t1, r, &dphi, Lt, pt, &st, &It);
+    ntw = profile_step1(fresh ? 0 : nt, h->seg_t, r, &dphi, Lt, pt, &st, &It);
     Mt = ktw * It;
     if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
     kr = ktw * st;
@@ -807,24 +794,23 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   h->a_prev = a;
   h->nseg = nfp;
   for (int j = 0; j < nfp; j++) {
-    h->xi[j] = pf[j].x1;
+    dc_cmd_piece *q = &h->seg[j];
+    q->xi = pf[j].x1;
     for (int k = 0; k < 3; k++) {
-      h->u0[j][k] = pf[j].v0[k];
-      h->u1[j][k] = pf[j].v1[k];
+      q->u0[k] = pf[j].v0[k];
+      q->u1[k] = pf[j].v1[k];
     }
   }
-  for (int j = nfp; j < DC_CMD_MAX_SEG; j++) {   /* unused pieces 0: one history per state */
-    h->xi[j] = 0.0;
-    for (int k = 0; k < 3; k++) h->u0[j][k] = h->u1[j][k] = 0.0;
-  }
+  /* pieces no longer used are 0 (one history per state); the rest are 0 already */
+  if (nfp < ns) memset(&h->seg[nfp], 0, sizeof(dc_cmd_piece) * (ns - nfp));
   if (p->twisting) {
     h->nseg_t = ntw;
     for (int j = 0; j < ntw; j++) {
-      h->xi_t[j] = pt[j].x1;
-      h->t0[j] = pt[j].v0[0];
-      h->t1[j] = pt[j].v1[0];
+      h->seg_t[j].xi = pt[j].x1;
+      h->seg_t[j].t0 = pt[j].v0[0];
+      h->seg_t[j].t1 = pt[j].v1[0];
     }
-    for (int j = ntw; j < DC_CMD_MAX_SEG; j++) h->xi_t[j] = h->t0[j] = h->t1[j] = 0.0;
+    if (ntw < nt) memset(&h->seg_t[ntw], 0, sizeof(dc_cmd_twist_piece) * (nt - ntw));
   }
   return DC_OK;
 }

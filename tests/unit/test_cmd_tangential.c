@@ -775,7 +775,7 @@ static void test_status(void)
   pb = p; pb.dissipation = 1; BAD(dc_cmd_step(&pb, &m, &good, n, du, 0.0, 0.0, &h, &o));
   pb = p; pb.twisting = 2; BAD(dc_cmd_step(&pb, &m, &good, n, du, 0.0, 1e-6, &h, &o));
   h.nseg = 9;            CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.0, 1e-6, &h, &o) == DC_EDOM); h = h0;
-  h.u1[0][1] = NAN;      CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.0, 1e-6, &h, &o) == DC_EDOM); h = h0;
+  h.seg[0].u1[1] = NAN;     CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.0, 1e-6, &h, &o) == DC_EDOM); h = h0;
   CHECK(!memcmp(&o, &o0, sizeof o));
   /* twisting off: dphi is not read */
   pb = p; pb.twisting = 0;

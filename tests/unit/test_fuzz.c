@@ -1593,10 +1593,15 @@ static void fuzz_cmd(void)
     const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, dt, &h, &o);
     const int untouched = UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h);
     /* without twisting the twist part of h is neither read nor written */
+    /* (the pieces in use: a corrupted unused piece is not read) */
     int fin_ok = FIN(o) && h.nseg >= 0.0 && h.nseg <= DC_CMD_MAX_SEG;
-    for (int k = 0; k < (p.twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS); k++)
-      fin_ok &= isfinite(((const double *)&h)[k]);
-    if (p.twisting) fin_ok &= h.nseg_t >= 0.0 && h.nseg_t <= DC_CMD_MAX_SEG;
+    const int used = (int)(offsetof(dc_cmd_state, seg) / sizeof(double)) + 7 * (fin_ok ? (int)h.nseg : 0);
+    for (int k = 0; k < used; k++) fin_ok &= isfinite(((const double *)&h)[k]);
+    if (p.twisting) {
+      fin_ok &= isfinite(h.nseg_t) && h.nseg_t >= 0.0 && h.nseg_t <= DC_CMD_MAX_SEG;
+      for (int j = 0; fin_ok && j < (int)h.nseg_t; j++)
+        fin_ok &= isfinite(h.seg_t[j].xi) && isfinite(h.seg_t[j].t0) && isfinite(h.seg_t[j].t1);
+    }
     else fin_ok &= !memcmp(&h.nseg_t, &h0.nseg_t, sizeof h - DC_CMD_FORCE_NFIELDS * sizeof(double));
     if (st == DC_OK && !bad && pa.formed != 0.0) {
       /* |Ft| <= mu F_bound, |Mt| <= M_s, Ft in the plane */

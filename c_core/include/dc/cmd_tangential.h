@@ -127,18 +127,27 @@ typedef struct {
    flags 0 or 1. DC_OK, or DC_EDOM with err naming the property or setting. */
 int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err);
 
-/* Per-contact history: plain doubles, all zero at the start. */
+/* One piece of a profile, in the per-contact history: its outer radius
+   xi (/ a_prev) and its values at the inner and outer end. */
+typedef struct {
+  double xi;
+  double u0[3];   /* [m] (flips) */
+  double u1[3];
+} dc_cmd_piece;
+typedef struct {
+  double xi;
+  double t0, t1;  /* [rad] (no flip: (w_i - w_j).n is symmetric) */
+} dc_cmd_twist_piece;
+
+/* Per-contact history: plain doubles, all zero at the start; piece by
+   piece, so that a profile of few pieces reads and writes few cache lines. */
 typedef struct {
   double n_prev[3];                   /* normal of the previous step (flips) */
   double a_prev;                      /* semi-major axis of the previous step [m]; 0: fresh */
   double nseg;                        /* pieces of the force profile */
-  double xi[DC_CMD_MAX_SEG];          /* outer radius of each piece, / a_prev */
-  double u0[DC_CMD_MAX_SEG][3];       /* value at the inner end [m] (flips) */
-  double u1[DC_CMD_MAX_SEG][3];       /* value at the outer end [m] (flips) */
+  dc_cmd_piece seg[DC_CMD_MAX_SEG];   /* the force profile, from the centre out */
   double nseg_t;                      /* pieces of the twist profile */
-  double xi_t[DC_CMD_MAX_SEG];
-  double t0[DC_CMD_MAX_SEG];          /* twist profile [rad] (no flip: (w_i - w_j).n is symmetric) */
-  double t1[DC_CMD_MAX_SEG];
+  dc_cmd_twist_piece seg_t[DC_CMD_MAX_SEG];
 } dc_cmd_state;
 
 /* Its field table (dc/contract.h), in struct order: a wrapper registers
@@ -168,9 +177,11 @@ typedef struct {
    du: displacement increment of this step (its normal part is removed);
    dphi: twist increment about n [rad] (read with twisting);
    dt: time step [s] > 0 (read with dissipation);
-   h: all zero, or left by earlier calls (its breakpoints increase to 1).
-   Updates h (unused pieces, and the twist fields without twisting, are
-   set to 0, so that one state has one history) and fills out. DC_EDOM for
+   h: all zero, or left by earlier calls (its breakpoints increase to 1,
+   pieces past nseg are 0).
+   Updates h (pieces it no longer uses become 0, so that one state has one
+   history; the twist fields are not touched without twisting) and fills
+   out. DC_EDOM for
    a non-finite or out-of-domain input; DC_ERANGE when a result, a stored
    value or a limit (3 mu F_b / (2 k), the stiffnesses) overflows. On an
    error h and out are untouched. A friction load so small that the force
