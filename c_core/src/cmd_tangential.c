@@ -719,14 +719,15 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     const double fn = dot3(F, nh);
     for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
   }
-  /* tangent stiffness along du (Eqs. 68, 70: theta k) */
-  double dir[3];
-  double kt;
-  {
+  /* tangent stiffness along du (Eqs. 68, 70: theta k); on an ellipse it
+     depends on the direction */
+  double kt = stick * k_major;
+  if (ell) {
+    double dir[3];
     double l = norm_dir(3, dut, dir);
     if (!(l > 0.0)) l = norm_dir(3, F, dir);
     const double ea = dot3(dir, ax);
-    kt = stick * k_major * (l > 0.0 && ell ? rho + (1.0 - rho) * ea * ea : ell ? 0.5 * (1.0 + rho) : 1.0);
+    kt *= l > 0.0 ? rho + (1.0 - rho) * ea * ea : 0.5 * (1.0 + rho);
   }
   const double lim = mu * Fb;
   if (p->dissipation && stick > 0.0 && p->t_visc > 0.0) {
@@ -744,7 +745,10 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     double e[3];
     const double fn = dot3(F, nh);   /* the viscous part may leave the plane by rounding */
     for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
-    if (norm_dir(3, F, e) > lim)
+    /* clipped onto the limit (rounding, dissipation); the squares decide
+       only where they are normal doubles clearly inside it */
+    const double f2 = dot3(F, F), l2 = lim * lim;
+    if (!(f2 >= DBL_MIN && l2 <= DBL_MAX && f2 < (1.0 - 1e-14) * l2) && norm_dir(3, F, e) > lim)
       for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
 

@@ -9,6 +9,8 @@
 # With DC_BENCH_BASELINE=/path/to/another/liggghts every configuration also
 # runs with that executable in the same round-robin, and a last table gives
 # each configuration's time against it (before/after a change).
+# DC_BENCH_ONLY="st sth ..." runs only the named configurations (their
+# rows print; the others show as n/a).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lmp="$root/build/bin/liggghts"
@@ -32,8 +34,11 @@ configs=(
   "sj0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9"
   "sh1|$sph|hertz|10000|1|-var cdf 1.0001"
   "sr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12"
-  # tangential: Cattaneo-Mindlin-Deresiewicz against stock tangential history
-  "st|$sph|hertz|10000|1|-var tmodel cmd_tangential"
+  # tangential: Cattaneo-Mindlin-Deresiewicz against stock tangential
+  # history, on the lattice jittered so that contacts are oblique (unjittered
+  # columns fall straight: no tangential motion at all)
+  "sth|$sph|hertz|10000|1|-var jitter 2e-4"
+  "st|$sph|hertz|10000|1|-var tmodel cmd_tangential -var jitter 2e-4"
   "qt|$sq|hertz_elliptic|15000|1|-var tmodel cmd_tangential"
   "qh|$sq|hertz|15000|1|"
   "qe|$sq|hertz_elliptic|15000|1|"
@@ -44,6 +49,7 @@ declare -A best
 for r in $(seq "$reps"); do
   for c in "${configs[@]}"; do
     IFS='|' read -r name deck model steps ranks extra <<< "$c"
+    if [ -n "${DC_BENCH_ONLY:-}" ] && [[ " $DC_BENCH_ONLY " != *" $name "* ]]; then continue; fi
     for which in new ${base:+base}; do
       exe=$lmp; key=$name
       [ "$which" = base ] && { exe=$base; key="base_$name"; }
@@ -58,31 +64,39 @@ for r in $(seq "$reps"); do
     done
   done
 done
-t_sh=${best[sh]} t_se=${best[se]} t_sr=${best[sr]} t_sj=${best[sj]} t_sh5=${best[sh5]} t_se2=${best[se2]}
-t_sj0=${best[sj0]} t_sh1=${best[sh1]} t_sr0=${best[sr0]} t_qh=${best[qh]} t_qe=${best[qe]} t_q2=${best[q2]}
-t_st=${best[st]} t_qt=${best[qt]}
-python3 - "$t_sh" "$t_se" "$t_qh" "$t_qe" "$t_q2" "$t_sr" "$t_sj" "$t_sh5" "$t_se2" "$t_sj0" "$t_sh1" "$t_sr0" "$t_st" "$t_qt" <<'PY'
+args=()
+for k in "${!best[@]}"; do args+=("$k=${best[$k]}"); done
+python3 - "${args[@]}" <<'PY'
 import sys
-sh, se, qh, qe, q2, sr, sj, sh5, se2, sj0, sh1, sr0, st, qt = map(float, sys.argv[1:])
+t = dict(a.split("=") for a in sys.argv[1:])
+def row(fmt, *names):
+    if all(n in t for n in names):
+        v = [float(t[n]) for n in names]
+        print(fmt(*v))
+    else:
+        print("n/a (not run): " + " ".join(names))
 print("scene (best of runs, loop time)                     stock hertz  hertz_elliptic  ratio")
-print("2888 spheres settling, 10000 steps, 1 rank          %9.3f s   %9.3f s     %.4f" % (sh, se, se / sh))
-print("324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh))
-print("2888 spheres: gw_rough (Feng, sigma = 0.01 r) %.3f s = %.4f x stock hertz" % (sr, sr / sh))
-print("    same contact distance (1.05): stock hertz %.3f s; gw_rough = %.4f x" % (sh5, sr / sh5))
-print("    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
-      "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1))
-print("2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se))
-print("    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
-      "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2))
-print("324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2))
-print("2888 spheres, hertz: tangential cmd_tangential %.3f s = %.4f x tangential history" % (st, st / sh))
-print("324 superquadrics, hertz_elliptic: tangential cmd_tangential %.3f s = %.4f x tangential history" % (qt, qt / qe))
+row(lambda sh, se: "2888 spheres settling, 10000 steps, 1 rank          %9.3f s   %9.3f s     %.4f" % (sh, se, se / sh), "sh", "se")
+row(lambda qh, qe: "324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh), "qh", "qe")
+row(lambda sr, sh: "2888 spheres: gw_rough (Feng, sigma = 0.01 r) %.3f s = %.4f x stock hertz" % (sr, sr / sh), "sr", "sh")
+row(lambda sh5, sr: "    same contact distance (1.05): stock hertz %.3f s; gw_rough = %.4f x" % (sh5, sr / sh5), "sh5", "sr")
+row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
+    "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1), "sh1", "sr0")
+row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")
+row(lambda se2, sj0: "    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
+    "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2), "se2", "sj0")
+row(lambda qe, q2: "324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2), "qe", "q2")
+row(lambda sth, st: "2888 spheres (jittered), hertz: tangential history %.3f s, cmd_tangential %.3f s = %.4f x"
+    % (sth, st, st / sth), "sth", "st")
+row(lambda qe, qt: "324 superquadrics, hertz_elliptic: tangential history %.3f s, cmd_tangential %.3f s = %.4f x"
+    % (qe, qt, qt / qe), "qe", "qt")
 PY
 if [ -n "$base" ]; then
   echo
   echo "configuration        baseline       this build     ratio (best of $reps, same round-robin)"
   for c in "${configs[@]}"; do
     IFS='|' read -r name deck model steps ranks extra <<< "$c"
+    if [ -n "${DC_BENCH_ONLY:-}" ] && [[ " $DC_BENCH_ONLY " != *" $name "* ]]; then continue; fi
     python3 -c "print('%-20s %9.3f s    %9.3f s     %.4f' % ('$name $model', ${best[base_$name]}, ${best[$name]}, ${best[$name]} / ${best[base_$name]}))"
   done
 fi
