@@ -42,12 +42,30 @@ static int get_d1(const dc_hertz_geom *g, double Estar, const dc_jamari_params *
 {
   const double KH = p->K_v * p->H, cH = p->c_h * p->H;
   if (!(KH <= DBL_MAX && cH <= DBL_MAX)) return DC_ERANGE;
-  /* second printed form: 2 Rc E K (K_v H/E*)^2; h = K_v H/E* may leave the
-     range (h = inf: no yield within the doubles) */
+  /* second printed form: 2 Rc E K (K_v H/E*)^2 */
   const double h = p->K_v * (p->H / Estar);
   o->d1 = 2.0 * g->Rc * g->E * g->K * (h * h);
-  if (!(o->d1 >= DBL_MIN && o->d1 <= DBL_MAX) && h > 0.0 && h <= DBL_MAX)
-    o->d1 = dc_scaled_product(6, (const double[]){2.0, g->Rc, g->E, g->K, h, h});
+  if (!(h >= DBL_MIN && h <= DBL_MAX && o->d1 >= DBL_MIN && o->d1 <= DBL_MAX)) {
+    /* an intermediate or the result left the range: mantissas multiplied,
+       exponents summed, one scaling at the end (inf: no yield within the
+       doubles; below DBL_MIN: DC_ERANGE beyond it) */
+    const double num[8] = {2.0, g->Rc, g->E, g->K, p->K_v, p->K_v, p->H, p->H};
+    double m = 1.0;
+    int e = 0, k;
+    for (int i = 0; i < 8; i++) {
+      m *= frexp(num[i], &k);
+      e += k;
+      m = frexp(m, &k);
+      e += k;
+    }
+    for (int i = 0; i < 2; i++) {
+      m /= frexp(Estar, &k);
+      e -= k;
+      m = frexp(m, &k);
+      e += k;
+    }
+    o->d1 = ldexp(m, e);
+  }
   o->p1 = 2.0 / 3.0 * KH;
   o->dp = fmax(0.0, cH - o->p1);
   return DC_OK;
@@ -147,6 +165,7 @@ int dc_jamari_onsets(const dc_hertz_geom *g, double Estar, const dc_jamari_param
   const int st = get_d1(g, Estar, p, &o);
   if (st != DC_OK) return st;
   get_rest(g, p, &o);
+  if (!(o.d1 >= DBL_MIN && o.d2 <= DBL_MAX)) return DC_ERANGE;
   *delta_n1 = o.d1;
   *delta_n2 = o.d2;
   return DC_OK;
@@ -207,7 +226,9 @@ int dc_jamari_step(const dc_hertz_geom *g, double Estar, const dc_jamari_params 
     if (st != DC_OK) return st;
     const double dr = residual(delta, &aux);
     h->delta_max = delta;
-    h->delta_res = dr >= 0.0 && dr < delta ? dr : 0.0;
+    /* delta_res < delta_max: phi below rounding (delta_max beyond ~1e30
+       delta_n1) leaves the branch one ulp wide */
+    h->delta_res = dr < delta ? (dr >= 0.0 ? dr : 0.0) : nextafter(delta, 0.0);
     h->F_max = cl.F;
     h->area_max = cl.area;
     *c = cl;

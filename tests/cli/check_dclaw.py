@@ -53,6 +53,8 @@ NON_FINITE = [
     ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_min 1e300", ["delta_min"]),
     ("jkr_elliptic --R1 0.002 --R2 0.0005 --n 3 --delta_max 1e300", ["delta_max"]),
     ("jkr_elliptic --n 3 --R1 1e300 --R2 1e300", ["R1", "R2"]),
+    ("jamari_ep --n 3 --delta_peak 1e308", ["delta_peak"]),
+    ("jamari_ep --summary 1 --delta_peak 1e308", ["delta_peak"]),
 ]
 # Inputs that printed inf or nan with exit 0 from an overflow inside c_core
 # although the results have finite limits (sigma -> 0 is smooth Hertz): an
@@ -82,6 +84,9 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("gw_rough", "n", "--n -3"), ("gw_rough", "n", "--n 2.5"), ("gw_rough", "n", "--n 1000001"),
     ("jkr_elliptic", "n", "--n 1e300"), ("jkr_elliptic", "n", "--n abc"), ("jkr_elliptic", "n", "--n ''"),
     ("gw_rough", "nope", "--nope 1"),
+    ("jamari_ep", "cA", "--cA 1.5"), ("jamari_ep", "ch", "--ch 0.1"), ("jamari_ep", "H", "--H 0"),
+    ("jamari_ep", "nu", "--nu -2"), ("jamari_ep", "Kv", "--Kv 0"), ("jamari_ep", "peak", "--peak 0"),
+    ("jamari_ep", "Estar", "--Estar 1e-300 --H 1e300"),
 ]]
 
 
@@ -106,6 +111,8 @@ GOOD = [
     "hertz_elliptic --k1a 500 --k2a 200 --k1b 1000 --k2b 1000 --omega 0.3 --delta 1e-6",
     "gw_rough", "gw_rough --w 0.05 --n 5", "jkr_elliptic", "jkr_elliptic --R1 0.002 --R2 0.0005 --n 1",
     "jkr_elliptic --summary 1 --n 1000000", "gw_rough --n 1e1",
+    "jamari_ep", "jamari_ep --summary 1", "jamari_ep --R1 0.002 --R2 0.0005 --nu 0 --peak 300 --n 50",
+    "jamari_ep --cA 2 --ch 1.2 --R1 0.004 --R2 0.001 --n 7", "jamari_ep --delta_peak 1e300 --n 3",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -136,6 +143,29 @@ got = dict(zip(head, rows[0]))
 for col, want in [("pulloff_force", 1.5 * math.pi * w * R),
                   ("delta_break", -0.75 * (math.pi ** 2 * w ** 2 * R / E ** 2) ** (1 / 3))]:
     check(rc == 0 and abs(got[col] / want - 1) < 1e-12, "sphere JKR %s %r, want %r" % (col, got[col], want))
+
+# jamari_ep, spheres: delta_n1 = (pi Kv H / (2 E*))^2 R, delta_n2 = c_A/2
+# delta_n1 (Eq. 44); below delta_n1 the Hertz force and no dissipation;
+# beyond it a residual overlap and dissipated energy.
+R, E, H, nu = 1.5e-3, 7e10, 1.2e9, 0.25
+base = ["jamari_ep", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(E), "--H", repr(H), "--nu", repr(nu)]
+Kv = 0.454 + 0.41 * nu
+d1 = (math.pi * Kv * H / (2 * E)) ** 2 * R
+rc, out, _ = run(base + ["--summary", "1", "--peak", "0.9"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+check(rc == 0 and abs(got["delta_n1"] / d1 - 1) < 1e-14, "sphere jamari delta_n1 %r, want %r" % (got["delta_n1"], d1))
+check(abs(got["delta_n2"] / (54 * d1) - 1) < 1e-14 and got["ratio_eq44"] == 0.5, "sphere jamari delta_n2 %r" % got["delta_n2"])
+check(got["delta_res"] == 0 and abs(got["energy"]) < 1e-12 * got["F_n1"] * d1, "elastic cycle: %r" % got)
+rc, out, _ = run(base + ["--peak", "0.9", "--n", "5"])
+head, rows = csv(out)
+for r in rows:
+    want = 4 / 3 * E * math.sqrt(R) * r[1] ** 1.5
+    check(abs(r[2] - want) <= 1e-14 * want, "jamari elastic row %r, want force %r" % (r, want))
+rc, out, _ = run(base + ["--summary", "1", "--peak", "30"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+check(rc == 0 and 0 < got["delta_res"] < got["delta_peak"] and got["energy"] > 0, "plastic cycle: %r" % got)
 
 print("%d passed, %d failed" % (counts["passed"], counts["failed"]))
 sys.exit(1 if counts["failed"] else 0)

@@ -36,6 +36,7 @@
 #include "dc/gw_rough_adhesive.h"
 #include "dc/gw_solver.h"
 #include "dc/hertz_elliptic.h"
+#include "dc/jamari_ep.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/mindlin.h"
 #include "dc/root_find.h"
@@ -1666,6 +1667,178 @@ static double root_f(double x, void *vp, int slot)
   }
 }
 
+/* ---------------------------------------------------------------- */
+/* jamari_ep.h                                                        */
+
+static int jamari_params_in(const dc_jamari_params *p)
+{
+  return ALLFIN(p->H, p->K_v, p->c_h, p->c_A) && p->H > 0.0 && p->K_v > 0.0 && p->c_h >= 2.0 / 3.0 * p->K_v &&
+         p->c_A >= 2.0;
+}
+/* Parameters: mostly inside the domain, now and then at its edges or wild. */
+static dc_jamari_params jamari_params(void)
+{
+  dc_jamari_params p;
+  p.H = U() < 0.8 ? fz_log(1e7, 1e10) : fz_pos();
+  p.K_v = U() < 0.7 ? 0.454 + 0.41 * 0.5 * U() : U() < 0.5 ? fz_log(1e-3, 10.0) : fz_pos();
+  p.c_h = U() < 0.6 ? fmax(1.0, p.K_v) : U() < 0.3 ? PICK(2.0 / 3.0 * p.K_v) : 2.0 / 3.0 * p.K_v * fz_log(0.5, 100.0);
+  p.c_A = U() < 0.6 ? 108.0 : U() < 0.2 ? PICK(2.0) : fz_log(1.0, 1e4);
+  p.H = A(p.H); p.K_v = A(p.K_v); p.c_h = A(p.c_h); p.c_A = A(p.c_A);
+  return p;
+}
+/* log of bounds on the loading curve's results at delta (DC_ERANGE is
+   allowed beyond them): the Hertz results, c_h H Ap delta, its slope times
+   the steepness of Eqs. 45-46 near delta_n2 -> delta_n1, and the yield
+   pressures; ld1: log delta_n1 */
+static double jamari_bound(const dc_hertz_geom *g, double E, const dc_jamari_params *p, double d, double *ld1)
+{
+  *ld1 = lg(2.0) + lg(g->Rc) + lg(g->E) + lg(g->K) + 2.0 * (lg(p->K_v) + lg(p->H) - lg(E));
+  const double lAp = lg(2.0 * M_PI) + 0.5 * (lg(g->R_major) + lg(g->R_minor));
+  const double q = p->c_A * g->R_area / (2.0 * sqrt(g->R_major) * sqrt(g->R_minor));
+  const double steep = q > 1.0 ? lg(2.0 + 1.5 * exp(lg(d) - *ld1) / (q - 1.0) + 1.0 / log(q)) : 0.0;
+  double b = fmax(hertz_bound(g, E, d), lg(p->c_h) + lg(p->H) + lAp + lg(d));
+  b = fmax(b, lg(p->c_h) + lg(p->H) + lAp + steep);
+  b = fmax(b, fmax(lg(p->K_v), lg(p->c_h)) + lg(p->H));
+  b = fmax(b, 0.5 * (lg(g->R_major) + lg(d)) + lAp);   /* semi-axes */
+  return b;
+}
+
+static void fuzz_jamari(void)
+{
+  static const char *names[4] = {"hardness", "plasticityKv", "plasticityCh", "plasticityCa"};
+  fz_fn *f = fz_new("dc_jamari_check");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_jamari_params p = jamari_params();
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_jamari_check(&p, &err);
+    const int inside = jamari_params_in(&p);
+    FZ_CHECK(f, st, !ALLFIN(p.H, p.K_v, p.c_h, p.c_A), inside, 1, 1, "H %.17g K_v %.17g c_h %.17g c_A %.17g", p.H, p.K_v,
+             p.c_h, p.c_A);
+    /* the first bad one is named, with its value */
+    const double v[4] = {p.H, p.K_v, p.c_h, p.c_A};
+    int first = -1;
+    if (!(isfinite(p.H) && p.H > 0.0)) first = 0;
+    else if (!(isfinite(p.K_v) && p.K_v > 0.0)) first = 1;
+    else if (!(isfinite(p.c_h) && p.c_h >= 2.0 / 3.0 * p.K_v)) first = 2;
+    else if (!(isfinite(p.c_A) && p.c_A >= 2.0)) first = 3;
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) &&
+                 (st == DC_OK ? UNTOUCHED(err)
+                              : first >= 0 && err.name && !strcmp(err.name, names[first]) && err.range &&
+                                    memcmp(&err.value, &v[first], sizeof(double)) == 0),
+              "wrong status or error report", "H %.17g K_v %.17g c_h %.17g c_A %.17g: status %d", p.H, p.K_v, p.c_h, p.c_A,
+              st);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_jamari_onsets");
+  fz_fn *fl = fz_new("dc_jamari_loading");
+  fl->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const dc_jamari_params p = jamari_params();
+    const double E = A(U() < 0.7 ? fz_log(1e9, 1e12) : fz_pos());
+    double out[2];
+    SENTINEL(out);
+    const int inside = jamari_params_in(&p) && isfinite(E) && E > 0.0;
+    const int bad = !ALLFIN(p.H, p.K_v, p.c_h, p.c_A, E);
+    int st = dc_jamari_onsets(g, E, &p, &out[0], &out[1]);
+    FZ_CHECK(f, st, bad, inside, UNTOUCHED(out), FIN(out) && out[0] >= DBL_MIN && out[1] >= out[0],
+             "R %.17g %.17g E %.17g H %.17g K_v %.17g c_h %.17g c_A %.17g", g->R_major, g->R_minor, E, p.H, p.K_v, p.c_h,
+             p.c_A);
+    double ld1;
+    jamari_bound(g, E, &p, 1.0, &ld1);
+    FZ_EXPECT(f, st != DC_ERANGE || ld1 < log(DBL_MIN) + 2.0 || ld1 + lg(p.c_A) > LOG_MAX - 2.0 ||
+                     fmax(lg(p.K_v), lg(p.c_h)) + lg(p.H) > LOG_MAX - 1.0,
+              "DC_ERANGE for representable onsets", "R %.17g %.17g E %.17g H %.17g K_v %.17g", g->R_major, g->R_minor, E,
+              p.H, p.K_v);
+    fl->seconds -= fz_now();
+    /* overlaps around the onsets, or anything */
+    const double d1 = exp(ld1);
+    const double d = A(U() < 0.7 ? d1 * fz_log(1e-3, 1e4) : U() < 0.2 ? PICK(0.0, -0.0, d1, d1 * 54.0) : fz_wide());
+    dc_contact c;
+    SENTINEL(c);
+    st = dc_jamari_loading(g, E, &p, d, &c);
+    FZ_CHECK(fl, st, bad || !isfinite(d), inside && isfinite(d), UNTOUCHED(c), contact_ok(&c) && c.F >= 0.0,
+             "R %.17g %.17g E %.17g H %.17g K_v %.17g c_h %.17g c_A %.17g delta %.17g", g->R_major, g->R_minor, E, p.H,
+             p.K_v, p.c_h, p.c_A, d);
+    FZ_EXPECT(fl, st != DC_ERANGE || jamari_bound(g, E, &p, d, &ld1) > LOG_MAX - 4.0 || ld1 < log(DBL_MIN) + 2.0,
+              "DC_ERANGE for a representable state", "R %.17g %.17g E %.17g H %.17g K_v %.17g c_h %.17g c_A %.17g delta %.17g",
+              g->R_major, g->R_minor, E, p.H, p.K_v, p.c_h, p.c_A, d);
+    fl->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the step: chains of calls on one history (a contact) with one geometry
+     and material, overlaps wandering up and down through the regimes, now
+     and then wild inputs, a fresh or a corrupted history */
+  f = fz_new("dc_jamari_step");
+  dc_jamari_state h = {0, 0, 0, 0};
+  int corrupt = 0;
+  const dc_hertz_geom *g = &hpool[0];
+  dc_jamari_params p0 = dc_jamari_defaults(2e9, 0.3);
+  double E0 = 1e11, x = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) {   /* a new contact */
+      memset(&h, 0, sizeof h);
+      corrupt = 0;
+      g = &hpool[UI(nh)];
+      do p0 = jamari_params(); while (!jamari_params_in(&p0));
+      E0 = fz_log(1e9, 1e12);
+      x = 0.0;
+    }
+    if (U() < 0.003) {   /* a corrupted history: any status but the promises */
+      ((double *)&h)[UI(DC_JAMARI_HISTORY_NFIELDS)] = U() < 0.5 ? fz_wild() : fz_wide();
+      corrupt = 1;
+    }
+    double ld1;
+    jamari_bound(g, E0, &p0, 1.0, &ld1);
+    x += exp(ld1) * fz_sign(fz_log(1e-4, 30.0));
+    if (U() < 0.02) x = 0.0;
+    const dc_jamari_params p = {A(p0.H), A(p0.K_v), A(p0.c_h), A(p0.c_A)};
+    const double E = A(E0), d = A(x);
+    const int bad = !ALLFIN(p.H, p.K_v, p.c_h, p.c_A, E, d, h.delta_max, h.delta_res, h.F_max, h.area_max);
+    const int dom = !bad && jamari_params_in(&p) && E > 0.0;
+    const dc_jamari_state h0 = h;
+    dc_contact c;
+    SENTINEL(c);
+    const int st = dc_jamari_step(g, E, &p, d, &h, &c);
+    const int untouched = UNTOUCHED(c) && !memcmp(&h, &h0, sizeof h);
+    const int fin_ok = contact_ok(&c) && c.F >= 0.0 && FIN(h);
+    FZ_CHECK(f, st, bad, dom, untouched, fin_ok,
+             "R %.17g %.17g E %.17g H %.17g K_v %.17g c_h %.17g c_A %.17g delta %.17g history %.17g %.17g %.17g %.17g corrupt %d",
+             g->R_major, g->R_minor, E, p.H, p.K_v, p.c_h, p.c_A, d, h0.delta_max, h0.delta_res, h0.F_max, h0.area_max,
+             corrupt);
+    /* DC_ERANGE only where the loading curve's bound or the branch
+       (F_max, 1.5 F_max/(delta_max - delta_res), area_max) can overflow */
+    if (st == DC_ERANGE) {
+      double big = jamari_bound(g, E, &p, d, &ld1);
+      big = fmax(big, lg(1.5 * h0.F_max) - lg(h0.delta_max - h0.delta_res));
+      big = fmax(big, 0.5 * (lg(h0.area_max) - lg(g->m1)));
+      FZ_EXPECT(f, corrupt || big > LOG_MAX - 4.0 || ld1 < log(DBL_MIN) + 2.0, "DC_ERANGE for representable results",
+                "R %.17g %.17g E %.17g H %.17g delta %.17g", g->R_major, g->R_minor, E, p.H, d);
+    }
+    /* the law's promises on a sane contact: never above the loading curve */
+    if (st == DC_OK && !corrupt && dom) {
+      dc_contact cl;
+      if (dc_jamari_loading(g, E, &p, d, &cl) == DC_OK)
+        FZ_EXPECT(f, c.F <= cl.F, "above the loading curve", "delta %.17g F %.17g loading %.17g", d, c.F, cl.F);
+      FZ_EXPECT(f, h.delta_res >= 0.0 && (h.delta_max == 0.0 || h.delta_res < h.delta_max), "history out of order",
+                "delta_max %.17g delta_res %.17g", h.delta_max, h.delta_res);
+    }
+    if (st != DC_OK) {
+      if (U() < 0.5) { memset(&h, 0, sizeof h); corrupt = 0; }
+    } else if (corrupt && U() < 0.2) {
+      memset(&h, 0, sizeof h);
+      corrupt = 0;
+    }
+  }
+  fz_done(f);
+}
+
 static void fuzz_root_find(void)
 {
   fz_fn *f = fz_new("dc_root_brent");
@@ -1811,6 +1984,7 @@ int main(void)
   fuzz_damping();
   fuzz_mindlin();
   fuzz_cmd();
+  fuzz_jamari();
   fuzz_root_find();
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",

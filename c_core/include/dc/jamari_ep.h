@@ -182,7 +182,8 @@ extern const dc_history_field dc_jamari_history[DC_JAMARI_HISTORY_NFIELDS];
    overflows; on any error the outputs (and the history) are untouched. */
 
 /* delta_n1 (Eq. 41) and delta_n2 (Eq. 44, raised to delta_n1 where it is
-   smaller); delta_n1 may be +inf (never yields: K_v H/E* beyond range). */
+   smaller); DC_ERANGE when one leaves the normal range (the loading curve
+   then is elastic for every finite overlap if delta_n1 overflows). */
 int dc_jamari_onsets(const dc_hertz_geom *g, double Estar, const dc_jamari_params *p,
                      double *delta_n1, double *delta_n2);
 
