@@ -66,12 +66,10 @@ static int get_d1(const dc_hertz_geom *g, double Estar, const dc_jamari_params *
     }
     o->d1 = ldexp(m, e);
   }
-  o->p1 = 2.0 / 3.0 * KH;
-  o->dp = fmax(0.0, cH - o->p1);
   return DC_OK;
 }
 
-/* The rest: Eq. 44 and the area factors. */
+/* The rest: Eq. 44, the area factors, the yield pressures. */
 static void get_rest(const dc_hertz_geom *g, const dc_jamari_params *p, onsets *o)
 {
   /* rho = Rc beta / (2 (R_major R_minor)^1/2) = R_area / (2 (R_major R_minor)^1/2) */
@@ -83,13 +81,15 @@ static void get_rest(const dc_hertz_geom *g, const dc_jamari_params *p, onsets *
   o->d2 = o->q > 1.0 ? o->q * o->d1 : o->d1;
   o->ce = M_PI * g->R_area;
   o->ap = 1.0 / rho;
+  o->p1 = 2.0 / 3.0 * (p->K_v * p->H);
+  o->dp = fmax(0.0, p->c_h * p->H - o->p1);
 }
 
 /* By-products of the plastic branches for the residual overlap. */
 typedef struct {
   double ex;   /* A / A_Hertz - 1 at delta */
   double A1;   /* F / (2/3 K_v H A_Hertz) - 1 = (1 + ex) pm/p1 - 1 */
-  double l;    /* ln(delta/delta_n1) */
+  double l;    /* ln(delta/delta_n1); -1: not formed (fully plastic) */
 } plastic_aux;
 
 /* Eqs. 45-46 (d1 < delta < d2) and 42-43 (delta >= d2): force, slope, area,
@@ -98,8 +98,7 @@ static int plastic_contact(const dc_hertz_geom *g, const dc_jamari_params *p, co
                            dc_contact *c, plastic_aux *aux)
 {
   double pm, kn, ratio, ex, pi1;   /* mean pressure, dF/d delta, A/A_Hertz, ratio - 1, pm/p1 - 1 */
-  /* ln(delta/d1) from the exact difference: full precision near d1 */
-  const double l = log1p((delta - o->d1) / o->d1);
+  double l = -1.0;   /* ln(delta/d1), formed where needed (-1: not yet) */
   if (delta >= o->d2) {
     /* Eqs. 42-43: A = 2 pi (R_i R_j)^1/2 delta = ap ce delta, F = c_h H A */
     ratio = o->ap;
@@ -115,6 +114,7 @@ static int plastic_contact(const dc_hertz_geom *g, const dc_jamari_params *p, co
     const double w = t * t * (3.0 - 2.0 * t), dw = 6.0 * t * (1.0 - t);
     const double L = log1p(span / o->d1);
     const double k = o->ap - 1.0;
+    l = log1p((delta - o->d1) / o->d1);   /* from the exact difference: full precision near d1 */
     const double s = fmin(1.0, l / L);
     pm = o->p1 + o->dp * s;                                      /* Eq. 45 bracket */
     pi1 = o->dp / o->p1 * s;
@@ -189,11 +189,12 @@ int dc_jamari_loading(const dc_hertz_geom *g, double Estar, const dc_jamari_para
    A_Hertz (delta/d1)^1/2 by Eq. 41), with 1 - phi = (expm1(l/2) - A1)/exp(l/2)
    and alpha^1/2 - 1 = ex/(alpha^1/2 + 1): no cancellation but between
    terms of the size of l. */
-static double residual(double delta, const plastic_aux *x)
+static double residual(double delta, double d1, const plastic_aux *x)
 {
   const double sa = sqrt(1.0 + x->ex);
   const double sa1 = x->ex / (sa + 1.0);                      /* alpha^1/2 - 1 */
-  const double h = expm1(0.5 * x->l);                         /* (delta/d1)^1/2 - 1 */
+  const double l = x->l >= 0.0 ? x->l : log1p((delta - d1) / d1);
+  const double h = expm1(0.5 * l);                            /* (delta/d1)^1/2 - 1 */
   if (!(x->A1 < h)) return delta * (sa1 / sa);                /* phi >= 1 */
   const double om = h <= DBL_MAX ? (h - x->A1) / (1.0 + h) : 1.0;   /* 1 - phi */
   return delta * ((sa1 + om) / sa);
@@ -204,7 +205,8 @@ int dc_jamari_step(const dc_hertz_geom *g, double Estar, const dc_jamari_params 
 {
   if (!inputs_ok(Estar, p, delta)) return DC_EDOM;
   const double dmax = h->delta_max, dres = h->delta_res, Fmax = h->F_max, Amax = h->area_max;
-  if (!(isfinite(dmax) && isfinite(dres) && isfinite(Fmax) && isfinite(Amax))) return DC_EDOM;
+  const int fresh = dmax == 0.0 && dres == 0.0 && Fmax == 0.0 && Amax == 0.0;
+  if (!fresh && !(isfinite(dmax) && isfinite(dres) && isfinite(Fmax) && isfinite(Amax))) return DC_EDOM;
   onsets o;
   int st = get_d1(g, Estar, p, &o);
   if (st != DC_OK) return st;
@@ -215,8 +217,7 @@ int dc_jamari_step(const dc_hertz_geom *g, double Estar, const dc_jamari_params 
     if (delta <= o.d1) {
       /* elastic: no memory (cleared if the geometry moved delta_n1 past it) */
       st = dc_hertz_normal(g, Estar, delta, c);
-      if (st == DC_OK && (dmax != 0.0 || dres != 0.0 || Fmax != 0.0 || Amax != 0.0))
-        *h = (dc_jamari_state){0.0, 0.0, 0.0, 0.0};
+      if (st == DC_OK && !fresh) *h = (dc_jamari_state){0.0, 0.0, 0.0, 0.0};
       return st;
     }
     get_rest(g, p, &o);
@@ -224,7 +225,7 @@ int dc_jamari_step(const dc_hertz_geom *g, double Estar, const dc_jamari_params 
     plastic_aux aux;
     st = loading_plastic(g, p, &o, delta, &cl, &aux);
     if (st != DC_OK) return st;
-    const double dr = residual(delta, &aux);
+    const double dr = residual(delta, o.d1, &aux);
     h->delta_max = delta;
     /* delta_res < delta_max: phi below rounding (delta_max beyond ~1e30
        delta_n1) leaves the branch one ulp wide */

@@ -40,9 +40,11 @@
        p = c_h H - (c_h - 2/3 K_v) H ln(delta_n2/delta)/ln(delta_n2/delta_n1),
        F = A p,
      with Ae, Ap the Hertz and truncation areas at delta. Evaluated as
-     p = 2/3 K_v H + (c_h - 2/3 K_v) H ln(delta/delta_n1)/ln(c_A rho): one
-     logarithm of a ratio >= 1, so overlaps of any size (subnormal
-     included) keep full precision.
+     p = 2/3 K_v H + (c_h - 2/3 K_v) H ln(delta/delta_n1)/ln(delta_n2/delta_n1)
+     with both logarithms as log1p of an exact difference over delta_n1:
+     logarithms of ratios, so overlaps of any size keep full precision (no
+     difference of two logarithms of tiny overlaps), full precision next to
+     delta_n1, and t = 1, p = c_h H exactly at delta_n2.
    Continuity: F and A are continuous at delta_n1 (A = Ae, mean pressure
    2/3 K_v H = the Hertz mean pressure at first yield) and at delta_n2
    (A = Ap, p = c_h H), to rounding (test_jamari_ep: a few ulps). The slope
@@ -51,7 +53,7 @@
    ln(delta_n2/delta_n1)) (equal only for kappa = 1/2; defaults, nu = 0.3,
    sphere: kappa = 0.40); at delta_n2 from (1 + (c_h - 2/3 K_v)/(c_h
    ln(delta_n2/delta_n1))) F/delta to F/delta (equal only for c_h = 2/3 K_v).
-   For kappa > 1/2 (defaults with nu < 0.12) the elastic-plastic curve rises
+   For kappa > 1/2 (defaults, sphere: nu < 0.114) the elastic-plastic curve rises
    above the Hertz curve just after yield. delta_n1 == delta_n2 (c_A rho <= 1):
    F jumps at delta_n1 from the Hertz value to c_h H Ap; no quotient by
    delta_n2 - delta_n1 or its logarithm is formed then.
