@@ -104,13 +104,13 @@
    close to delta_n1, slender ellipses); with the defaults (c_h = 1, c_A =
    108, K_v from nu) it acts for nu below about 0.1: for a sphere wherever
    kappa > 1/2 (nu < 0.114), on branches from delta_max just above
-   delta_n1 (nu = 0.11: from 1.01 delta_n1, not from 1.1); a scan of branches from
-   delta_max up to 1e4 delta_n1 (test_jamari_ep) finds it up to nu = 0.095
-   for spheres, 0.11 at R_minor/R_major = 0.1, 0.17 at 1e-4, 0.31 at 1e-6,
-   every nu at 1e-9, and never for nu >= 0.2 down to 1e-4. The branch is
-   a function of delta and the history alone: reloading retraces it bit
-   for bit up to delta_max and then follows the loading curve, which
-   raises delta_max. delta <= delta_res: F = 0, formed = 0.
+   delta_n1 (nu = 0.11: from 1.01 delta_n1, not from 1.1); a scan of
+   branches from delta_max up to 1e4 delta_n1 (test_jamari_ep) finds it up
+   to nu = 0.095 for spheres, 0.11 at R_minor/R_major = 0.1, 0.17 at 1e-4,
+   0.31 at 1e-6, every nu at 1e-9, and never for nu >= 0.2 down to 1e-4.
+   The branch is a function of delta and the history alone: reloading
+   retraces it bit for bit up to delta_max and then follows the loading
+   curve, which raises delta_max. delta <= delta_res: F = 0, formed = 0.
 
    Geometry that changes between steps (superquadrics): the loading curve
    uses this step's geometry, the unloading branch the stored delta_max,
