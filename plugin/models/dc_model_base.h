@@ -21,6 +21,7 @@
 #ifndef DC_PLUGIN_DC_MODEL_BASE_H
 #define DC_PLUGIN_DC_MODEL_BASE_H
 
+#include <cfloat>
 #include <cstdio>
 #include <string>
 #include "atom.h"
@@ -92,6 +93,15 @@ public:
       registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller.c_str());
       registry.connect("betaeff", betaeff, caller.c_str());
     }
+    const int n = registry.max_type();
+    for (int i = 1; i <= n; i++)
+      for (int j = 1; j <= n; j++)
+        if (!(Yeff[i][j] > 0.0 && Yeff[i][j] <= DBL_MAX && Geff[i][j] > 0.0 && Geff[i][j] <= DBL_MAX)) {
+          char msg[256];
+          snprintf(msg, sizeof msg, "youngsModulus and poissonsRatio of types %d and %d give E* = %g, G* = %g: "
+                   "youngsModulus is outside the range of doubles for this pair", i, j, Yeff[i][j], Geff[i][j]);
+          stop(true, msg);
+        }
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -123,10 +133,23 @@ protected:
   void checkReach(const SurfacesCloseData &d, double range, const char *why_format, double why_value)
   {
     const double reach = d.is_wall ? d.radi : d.radsum;
-    if (neighbor->contactDistanceFactor * reach < reach + range) {
-      char why[256], msg[384];
+    if (!(range <= DBL_MAX)) {
+      char why[256], msg[512];
       snprintf(why, sizeof why, why_format, why_value);
-      snprintf(msg, sizeof msg, "%s: set neigh_modify contact_distance_factor >= %.12g", why, 1.0 + range / reach);
+      snprintf(msg, sizeof msg, "%s, but this reach is not finite: youngsModulus of types %d and %d (E* = %g) is "
+               "too small", why, d.itype, d.jtype, Yeff[d.itype][d.jtype]);
+      stop(false, msg);
+    }
+    if (neighbor->contactDistanceFactor * reach < reach + range) {
+      char why[256], msg[512];
+      snprintf(why, sizeof why, why_format, why_value);
+      const double factor = 1.0 + range / reach;
+      if (factor <= 2.0)
+        snprintf(msg, sizeof msg, "%s: set neigh_modify contact_distance_factor >= %.12g", why, factor);
+      else   /* a reach beyond the particles' size: the material input is suspect */
+        snprintf(msg, sizeof msg, "%s: set neigh_modify contact_distance_factor >= %.12g; a reach beyond the "
+                 "particle size points at too small a youngsModulus (E* = %g for types %d and %d)", why, factor,
+                 Yeff[d.itype][d.jtype], d.itype, d.jtype);
       stop(false, msg);
     }
   }

@@ -119,11 +119,11 @@ private:
     publishNone(scdata);
   }
 
-  void fail(const char *what, double delta, double R1, double R2, double w, int st)
+  void fail(const char *what, double delta, double R1, double R2, double w, double Y, int st)
   {
-    char msg[256];
-    snprintf(msg, sizeof msg, "%s at overlap %g, radii %g, %g, work of adhesion %g: %s",
-             what, delta, R1, R2, w, dc_status_str(st));
+    char msg[384];
+    snprintf(msg, sizeof msg, "%s at overlap %g, radii %g, %g, workOfAdhesion %g, E* %g (from youngsModulus and "
+             "poissonsRatio): %s", what, delta, R1, R2, w, Y, dc_status_str(st));
     stop(false, msg);
   }
 
@@ -145,7 +145,7 @@ private:
       dc_hertz_geom g;
       if (sq) {
         const int st = dc_hertz_geometry(R_major, R_minor, &g);
-        if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, st);
+        if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, Y, st);
         r_force = g.R_force;
         r_area = g.R_area;
       }
@@ -168,18 +168,18 @@ private:
       } else {
         dc_jkr_geom g;
         st = dc_jkr_geometry(R_major, R_minor, Y, w, &g);
-        if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, st);
+        if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, Y, st);
         if (forming) checkReach(sidata, -g.delta_break, whyReach(), w);
         dc_jkr_hint *hint = reinterpret_cast<dc_jkr_hint *>(&sidata.contact_history[hint_offset]);
         st = dc_jkr_contact(&g, delta, hint, &s);
         F_pull = -g.F_pull;
       }
-      if (st != DC_OK) fail("contact state", delta, R_major, R_minor, w, st);
+      if (st != DC_OK) fail("contact state", delta, R_major, R_minor, w, Y, st);
       if (!s.contact) return false;
       P = s.F;
       if (sq) {
         st = dc_punch_stiffness(Y, s.a, s.b > 0.0 ? s.b : s.a, &Sn);
-        if (st != DC_OK) fail("punch stiffness", delta, R_major, R_minor, w, st);
+        if (st != DC_OK) fail("punch stiffness", delta, R_major, R_minor, w, Y, st);
         kt = dc_mindlin_kt_circle(G, sqrt(s.a * s.b));
       } else {
         Sn = dc_punch_stiffness_circle(Y, s.a);

@@ -2,7 +2,12 @@
 """Bad deck input ends the run with an error that names the cause (never a
 crash or a silent NaN): unknown model, missing material property, a setting
 outside its range, a missing property for an option, a setting the model
-does not take, superquadrics without `surface superquadric`. Usage: check_deck_errors.py WORKDIR"""
+does not take, superquadrics without `surface superquadric`; and the stock
+failures the project's patches turn into messages: coincident spheres, a
+sphere centre on a wall, a position that overflows, youngsModulus <= 0 with
+soft_particles, a property value that is not a finite number, write_data
+with superquadrics (read back) and with contact history (a warning).
+Usage: check_deck_errors.py WORKDIR"""
 import os
 import sys
 
@@ -22,12 +27,35 @@ cases = [
     ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
     ("limitForce on an adhesive model", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="limitForce on"), "Normal model jkr_elliptic: 'limitForce on' is not available"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
+    ("coincident spheres", "in.sphere_base", dict(ok, model="hertz tangential history", settings="", x0="0"), "Atoms 1 and 2 are at the same position"),
+    ("sphere centre on a wall", "in.sphere_wall", {"props": props("props_full"), "z0": "0"}, "Atom 1 has its centre on the wall"),
+    ("NaN position", "in.sphere_wall", {"props": props("props_full"), "fx": "v_nan"}, "Atom 1 has a non-finite position"),
+    ("youngsModulus 0 with soft_particles", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_soft_zero")), "youngsModulus for type 1 is 0: it must be > 0"),
+    ("youngsModulus 1e999", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_inf")), "Fix property/global youngsModulus: value 1 is '1e999', not a finite number"),
+    ("tiny youngsModulus with soft_particles (jkr_elliptic)", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_soft_tiny"), settings="tangential_damping on", x0="0.00099"), "too small a youngsModulus (E* = 5.49451e-301 for types 1 and 1)"),
 ]
 for k, (name, deck, variables, message) in enumerate(cases):
     code, out = run("deck_errors/" + deck, os.path.join(work, "case%d" % k), variables=variables, tag="err", expect_error=True)
     err_lines = [l for l in out.splitlines() if "ERROR" in l]
     c.true(code != 0 and any(message in l for l in err_lines),
            "%s: exit %d, error line: %s" % (name, code, err_lines[0].strip() if err_lines else "(none)"))
+# warnings where a data file loses state, and superquadrics read back
+code2, out2 = run("deck_errors/in.superquadric_data", os.path.join(work, "sq_data"), variables={"props": props("props_full")}, tag="sq", expect_error=True)
+c.true(code2 == 0 and "superquadric orientations are not written" in out2 and "contact history is not written" in out2,
+       "write_data with superquadrics: exit %d, warnings on orientation and contact history" % code2)
+rows = {}
+dump = os.path.join(work, "sq_data", "back.dump")
+if os.path.exists(dump):
+    lines = open(dump).read().split("\n")
+    k = [l.strip() for l in lines].index("ITEM: ATOMS id type shapex shapey shapez blockiness1 blockiness2 density x y z")
+    for l in lines[k + 1:]:
+        if l.strip():
+            v = l.split()
+            rows[int(v[0])] = [float(x) for x in v[2:]]
+want = {1: [0.001, 0.0015, 0.002, 2, 2, 2500, 0.0, 0.0, 0.0], 2: [0.0012, 0.0012, 0.0025, 4, 3, 2600, 0.005, 0.0, 0.0]}
+c.true(rows.keys() == want.keys() and all(abs(rows[i][k] - want[i][k]) <= 1e-12 * max(1.0, abs(want[i][k]))
+                                          for i in want for k in range(9)),
+       "superquadrics read back from write_data: shape, blockiness, density, position %s" % rows)
 # the same base deck with full input runs
 code, out = run("deck_errors/in.sphere_base", os.path.join(work, "good"), variables=dict(ok, model="hertz_elliptic tangential history"), tag="ok", expect_error=True)
 c.true(code == 0, "complete deck runs (exit %d)" % code)
