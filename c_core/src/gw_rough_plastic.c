@@ -79,6 +79,7 @@ typedef struct {
 /* Per-shape constants of the elastic-plastic range. */
 typedef struct {
   double a, lm1, c_h, dP, inv_lr, inv_rm1, inv_a, inv_ba;
+  int small_lr;   /* ln(b/a) < 1/16 */
 } ep_consts;
 
 /* Elastic summit at compression u, with quadrature weight wq (phi and the
@@ -98,7 +99,9 @@ static inline void add_ep(sums *S, const ep_consts *k, double u, double off, dou
   const double c = x * x * (3.0 - 2.0 * x);
   const double A = 1.0 + k->lm1 * c;
   const double ra = 1.0 + off * k->inv_a;   /* u/a */
-  const double P = k->c_h - k->dP * (1.0 - log1p(off * k->inv_a) * k->inv_lr);
+  /* ln(u/a): log1p keeps it exact to rounding where ln(b/a) is small */
+  const double lr_u = k->small_lr ? log1p(off * k->inv_a) : log(ra);
+  const double P = k->c_h - k->dP * (1.0 - lr_u * k->inv_lr);
   const double dA = k->lm1 * 6.0 * x * (1.0 - x) * ra * k->inv_rm1;   /* u dA/du */
   S->JA += wq * u * A;
   S->Jp += wq * u * A * P;
@@ -257,7 +260,7 @@ static void integrals(const dc_gw_plastic_shape *sh, double ratio, double h, dc_
   if (ep_on) {
     const double lr = log(ratio);
     const ep_consts kc = {a, sh->lambda - 1.0, sh->c_h, sh->c_h - sh->Km, 1.0 / lr,
-                          1.0 / (ratio - 1.0), 1.0 / a, 1.0 / (a * (ratio - 1.0))};
+                          1.0 / (ratio - 1.0), 1.0 / a, 1.0 / (a * (ratio - 1.0)), lr < 0.0625};
     n += regime_panels(&S, &kc, h, s_ep, p0, p1);
   }
   if (pl_on) {

@@ -415,7 +415,27 @@ static void test_random(void)
   printf("random sweep: %d DC_OK, %d DC_ERANGE, %d bad\n", ok, erange, bad);
 }
 
-/* (7) cost: ns per call */
+/* (7) cost: ns per call, and against dc_gw_rough_elliptic (the elastic
+   closed form) timed in the same loop (the ratio is what a loaded machine
+   leaves comparable) */
+static double time_calls(const dc_hertz_geom *g, const dc_gw_plastic_params *p, double sigma, int plastic)
+{
+  const int N = 20000;
+  double best = 1e300, sink = 0;
+  for (int rep = 0; rep < 3; rep++) {
+    const clock_t t0 = clock();
+    for (int i = 0; i < N; i++) {
+      const double h = 3.0 - 6.0 * (i % 1000) / 1000.0;   /* h in (-3, 3] */
+      dc_gw_rough_state s;
+      if (plastic) dc_gw_rough_plastic(g, 1e11, p, 100.0, sigma, -h * sigma, &s);
+      else dc_gw_rough_elliptic(g, 1e11, 100.0, sigma, -h * sigma, &s);
+      sink += s.F;
+    }
+    best = fmin(best, (double)(clock() - t0) / CLOCKS_PER_SEC / N * 1e9);
+  }
+  return sink > 0 ? best : -1;
+}
+
 static void test_timing(void)
 {
   dc_hertz_geom g;
@@ -424,29 +444,18 @@ static void test_timing(void)
   const double sigmas[3] = {1e-6, 1e-7, 1e-8};   /* a = w1/sigma = 0.33, 3.3, 33 */
   for (int is = 0; is < 3; is++) {
     const double sigma = sigmas[is];
-    const int N = 20000;
-    double best = 1e300, sink = 0;
-    int panels = 0;
-    for (int rep = 0; rep < 3; rep++) {
-      const clock_t t0 = clock();
-      for (int i = 0; i < N; i++) {
-        const double h = 3.0 - 6.0 * (i % 1000) / 1000.0;   /* h in (-3, 3] */
-        dc_gw_rough_state s;
-        dc_gw_rough_plastic(&g, 1e11, &p, 100.0, sigma, -h * sigma, &s);
-        sink += s.F;
-      }
-      best = fmin(best, (double)(clock() - t0) / CLOCKS_PER_SEC / N * 1e9);
-    }
+    const double t_el = time_calls(&g, &p, sigma, 0), t_pl = time_calls(&g, &p, sigma, 1);
     dc_gw_plastic_summit sm;
     dc_gw_plastic_summit_init(&g, 1e11, &p, &sm);
     const dc_gw_plastic_shape sh = {sm.w1 / sigma, sm.w2 / sigma, sm.lambda, sm.Km, sm.c_h};
+    int panels = 0;
     for (int i = 0; i < 1000; i++) {
       dc_gw_plastic_sums J;
       dc_gw_plastic_integrals(&sh, 3.0 - 6.0 * i / 1000.0, &J);
       panels += J.n_panels;
     }
-    printf("timing: sphere, a = w1/sigma = %.3g, h in (-3, 3]: %.0f ns per call, %.1f panels (sink %g)\n",
-           sm.w1 / sigma, best, panels / 1000.0, sink > 0 ? 1.0 : 0.0);
+    printf("timing: sphere, a = w1/sigma = %.3g, h in (-3, 3]: %.0f ns per call, %.1f panels; "
+           "dc_gw_rough_elliptic %.0f ns (ratio %.1f)\n", sm.w1 / sigma, t_pl, panels / 1000.0, t_el, t_pl / t_el);
   }
 }
 

@@ -85,10 +85,11 @@
    198 integral rows, h from -1e4 to 35, a from 1e-4 to 100, w2/w1 from 1
    to 1000): the F and kn combinations 1e-15, each integral 2e-15 relative
    to itself where it carries more than 1e-20 of its sum; the rough
-   contact 3e-15. Cost: no panels where the window lies in one closed-form
-   regime (all elastic or all fully plastic, ~0.2 us); ~9-11 panels for h
-   in (-3, 3] when the regimes meet there (~1.5-2 us; ns per call printed
-   by the test). Not tabulated: the integrals depend on h, a, w2/w1,
+   contact 3e-15. Cost (test_gw_rough_plastic prints it): no panels where
+   the window lies in one closed-form regime (all elastic or all fully
+   plastic: 1.1 times dc_gw_rough_elliptic); 9-11 panels for h in (-3, 3]
+   when the regimes meet there (8-9 times dc_gw_rough_elliptic, 1.6-1.8 us
+   measured on a loaded machine; exp and log take a third). Not tabulated: the integrals depend on h, a, w2/w1,
    lambda, 2K_v/3 and c_h (a per contact for polydisperse spheres, lambda
    and w2/w1 per contact for ellipsoids), too many for a fitted table.
 
@@ -182,15 +183,17 @@ typedef struct {
 } dc_gw_plastic_summit;
 
 /* Binds params (checked by dc_gw_plastic_check) to geometry g and Estar > 0
-   (finite). DC_EDOM for a bad Estar or params; DC_ERANGE when w1 or w2
-   leaves the range of doubles (w1 = 0 or inf). */
+   (finite); DC_EDOM for a bad Estar or params. w1 may underflow to 0 (all
+   summits fully plastic) or overflow to +inf (all elastic): both are the
+   law's limits, not errors. */
 int dc_gw_plastic_summit_init(const dc_hertz_geom *g, double Estar, const dc_gw_plastic_params *p,
                               dc_gw_plastic_summit *s);
 
 /* The summit law (above) at compression omega (finite; <= 0 gives zeros):
-   force f [N], contact area [m^2], df/d omega [N/m] (the right derivative
-   at w1 and w2). DC_EDOM for non-finite omega; DC_ERANGE when a result
-   overflows (outputs untouched). */
+   force f [N], contact area [m^2], df/d omega [N/m] (at w1 and w2 that of
+   the elastic-plastic branch, or of the plastic one when w2 = w1). DC_EDOM
+   for non-finite omega; DC_ERANGE when a result overflows (outputs
+   untouched). */
 int dc_gw_plastic_summit_law(const dc_gw_plastic_summit *s, double omega, double *f, double *area,
                              double *df);
 
@@ -217,8 +220,8 @@ int dc_gw_plastic_integrals(const dc_gw_plastic_shape *sh, double h, dc_gw_plast
    the gw_rough law with these summits: F, A, kn as above, h = -delta/sigma.
    Domain as dc_gw_rough_elliptic (Estar > 0, n_asp > 0, sigma >= 0, all
    finite, delta finite) and params passing dc_gw_plastic_check; DC_EDOM
-   otherwise, DC_ERANGE when w1, F, kn or the area leaves the range of
-   doubles; the state is written only on DC_OK. The contract output:
+   otherwise, DC_ERANGE when F, kn or the area overflows; the state is
+   written only on DC_OK. The contract output:
    dc_gw_rough_normal (dc/gw_rough.h) with this F and kn. */
 int dc_gw_rough_plastic(const dc_hertz_geom *g, double Estar, const dc_gw_plastic_params *p,
                         double n_asp, double sigma, double delta, dc_gw_rough_state *s);
