@@ -34,6 +34,8 @@ configs=(
   "sj0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9"
   "sh1|$sph|hertz|10000|1|-var cdf 1.0001"
   "sr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12"
+  # plasticity: hardness 1e5 Pa yields at 1e-3 r, so settling contacts go plastic
+  "sjp|$sph|jamari_ep|10000|1|"
   # tangential: Cattaneo-Mindlin-Deresiewicz against stock tangential
   # history, on the lattice jittered so that contacts are oblique (unjittered
   # columns fall straight: no tangential motion at all)
@@ -85,6 +87,7 @@ row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact di
 row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")
 row(lambda se2, sj0: "    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
     "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2), "se2", "sj0")
+row(lambda sjp, sh: "2888 spheres: jamari_ep (hardness 1e5 Pa: plastic) %.3f s = %.4f x stock hertz" % (sjp, sjp / sh), "sjp", "sh")
 row(lambda qe, q2: "324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2), "qe", "q2")
 row(lambda sth, st: "2888 spheres (jittered), hertz: tangential history %.3f s, cmd_tangential %.3f s = %.4f x"
     % (sth, st, st / sth), "sth", "st")

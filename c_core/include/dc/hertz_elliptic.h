@@ -28,6 +28,7 @@
 #ifndef DC_HERTZ_ELLIPTIC_H
 #define DC_HERTZ_ELLIPTIC_H
 
+#include <float.h>
 #include <math.h>
 #include "dc/contract.h"
 
@@ -75,6 +76,22 @@ int dc_hertz_eccentricity_approx(double ratio, double *e2);
    DC_EDOM). Rc, R_force and R_area are at most R_major and are computed
    without intermediate overflow or underflow over the whole domain. */
 int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *g);
+
+/* dc_hertz_geometry(R, R, g) for a circular contact, without its checks
+   (R > 0 finite): the hot path of sphere contacts. Same bits. */
+static inline void dc_hertz_geometry_circle(double R, dc_hertz_geom *g)
+{
+  const double prod = R * R;
+  g->R_major = g->R_minor = R;
+  g->Rc = prod >= DBL_MIN && prod <= DBL_MAX ? prod / (R + R) : 0.5 * R;
+  g->e2 = 0.0;
+  g->m1 = 1.0;
+  g->K = g->E = 0.5 * M_PI;
+  g->D = 0.25 * M_PI;
+  g->gamma = M_SQRT2;
+  g->beta = 2.0;
+  g->R_force = g->R_area = R;
+}
 
 /* Force, area, semi-axes, stiffness at overlap delta >= 0 for effective
    modulus Estar = 1 / sum (1 - nu^2)/E > 0, both finite (else DC_EDOM);

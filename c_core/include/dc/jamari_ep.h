@@ -158,6 +158,15 @@ static inline dc_jamari_params dc_jamari_defaults(double H, double nu)
   return p;
 }
 
+/* delta_n1 / R of a circular contact of effective radius R (Rc = R/2):
+   (pi K_v H / (2 E*))^2, Eq. 41 with E = K = pi/2. For a wrapper's elastic
+   fast path (inputs as dc_jamari_onsets; unchecked). */
+static inline double dc_jamari_circle_yield_ratio(double Estar, const dc_jamari_params *p)
+{
+  const double q = 1.5707963267948966 * p->K_v * p->H / Estar;
+  return q * q;
+}
+
 /* Parameter check (dc/contract.h), in the order hardness (0, inf),
    plasticityKv (0, inf), plasticityCh [2/3 plasticityKv, inf), plasticityCa
    [2, inf), all finite: DC_OK, or DC_EDOM with err naming the first bad one. */
