@@ -11,6 +11,13 @@
                          F_3/2(-delta/sigma) (required for superquadrics)
      fengFitted on|off   Feng law coefficients from the fitted formulas instead
                          of the interpolated tables (default off)
+     gwPlastic on|off    with gwElliptic on: elastic, elastic-plastic and fully
+                         plastic summits (Jeng & Wang; dc/gw_rough_plastic.h),
+                         loading curve only (unloading retraces it); property
+                         hardness peratomtype [Pa] (the softer type's per pair)
+                         and the settings plasticityKv (default 0: 0.454 + 0.41
+                         nu), plasticityCh (1), plasticityCa (108) of jamari_ep
+                         (default off)
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
      viscoelasticTime), and
      surfaceRoughness peratomtype [m] >= 0: rms summit height sigma_i of each
@@ -38,6 +45,7 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,@DC_MODEL_ID@)
 #include "superquadric_gap.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
+#include "dc/gw_rough_plastic.h"
 #include "dc/mindlin.h"
 
 namespace LIGGGHTS {
@@ -49,7 +57,8 @@ class NormalModel<GW_ROUGH> : public DcNormalModel
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
-    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), ntypes(0)
+    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false), kv(0.0),
+    ch(1.0), ca(108.0), ntypes(0)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
@@ -61,12 +70,18 @@ public:
     DcNormalModel::registerSettings(settings);
     settings.registerOnOff("gwElliptic", gwElliptic, false);
     settings.registerOnOff("fengFitted", fengFitted, false);
+    settings.registerOnOff("gwPlastic", gwPlastic, false);
+    settings.registerDoubleSetting("plasticityKv", kv, 0.0);
+    settings.registerDoubleSetting("plasticityCh", ch, 1.0);
+    settings.registerDoubleSetting("plasticityCa", ca, 108.0);
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     if (atom->superquadric_flag && !gwElliptic)
       stop(true, "superquadric particles need the elliptic closed form: add 'gwElliptic on' (the Feng law is for spheres)");
+    if (gwPlastic && !gwElliptic)
+      stop(true, "'gwPlastic on' needs 'gwElliptic on' (plastic summits are in the GW closed form with asperityCount)");
     DcNormalModel::postSettings(hsetup, c);
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.setup(lmp, c);
@@ -88,6 +103,23 @@ public:
         for (int j = 1; j <= ntypes; j++)
           if (dc_gw_rough_check(n_asp[i][j], &err))
             stopParam(err, i, j);
+      if (gwPlastic) {
+        registry.registerProperty("hardness", &createHardness, caller);
+        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, caller);
+        const double *H = registry.getVectorProperty("hardness", caller)->data;
+        const double *nu = registry.getVectorProperty("poissonsRatio", caller)->data;
+        plastic.assign((ntypes + 1) * (ntypes + 1), dc_gw_plastic_params());
+        for (int i = 1; i <= ntypes; i++)
+          for (int j = 1; j <= ntypes; j++) {
+            const int soft = H[j] < H[i] ? j : i;
+            dc_gw_plastic_params p = dc_gw_plastic_default_params(H[soft], nu[soft]);
+            if (kv != 0.0) p.K_v = kv;
+            p.c_h = ch;
+            p.c_A = ca;
+            if (dc_gw_plastic_check(&p, &err)) stopParam(err, i, j);
+            plastic[i * (ntypes + 1) + j] = p;
+          }
+      }
       return;
     }
     registry.registerProperty("roughnessMu", &createMu, caller);
@@ -171,7 +203,9 @@ private:
     } else {
       if (gwElliptic) {
         dc_gw_rough_state s;
-        const int st = dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+        const int st = gwPlastic ? dc_gw_rough_plastic(&g, Y, &plastic[itype * (ntypes + 1) + jtype],
+                                                       n_asp[itype][jtype], sigma, delta, &s)
+                                 : dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
         if (st != DC_OK) {
           char msg[256];
           snprintf(msg, sizeof msg, "overlap %g, roughness %g, radius %g: %s", delta, sigma, reff, dc_status_str(st));
@@ -212,15 +246,21 @@ private:
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "roughnessMu", caller, sanity_checks);
   }
+  static VectorProperty *createHardness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypeProperty(registry, "hardness", caller, sanity_checks, 0.0, HUGE_VAL);
+  }
   static MatrixProperty *createAsperityCount(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "asperityCount", caller, sanity_checks, 1e-300);
   }
 
   double **roughness, **mu, **n_asp;
-  bool gwElliptic, fengFitted;
+  bool gwElliptic, fengFitted, gwPlastic;
+  double kv, ch, ca;
   int ntypes;
   std::vector<dc_feng_pair> laws;
+  std::vector<dc_gw_plastic_params> plastic;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;
 #endif

@@ -11,6 +11,8 @@ sigma = 10 um per surface, one asperity: n_asp = 1).
 - no force before delta = -3 sigma, force from there on (before touch);
 - sigma = 0: gw_rough equals hertz_elliptic exactly;
 - 2 MPI ranks (the pair straddles the ranks) equal 1 rank; reference output.
+gwPlastic on: equal to the elastic law where no summit yields; lower peak
+force where they do.
 Usage: check_rough_superquadric.py WORKDIR [--update]"""
 import math
 import os
@@ -39,11 +41,13 @@ def F32(h):
 
 
 runs = {}
-for name, smooth, sigma, ranks in (("rough", 0, sig1, 1), ("rough_np2", 0, sig1, 2),
-                                   ("smooth_gw", 0, 0.0, 1), ("smooth_he", 1, 0.0, 1)):
+for name, smooth, sigma, ranks, extra in (("rough", 0, sig1, 1, {}), ("rough_np2", 0, sig1, 2, {}),
+                                          ("smooth_gw", 0, 0.0, 1, {}), ("smooth_he", 1, 0.0, 1, {}),
+                                          ("plastic_hard", 0, sig1, 1, {"plastic": 1, "hardness": 1e30}),
+                                          ("plastic_soft", 0, sig1, 1, {"plastic": 1, "hardness": 2e4})):
     d = os.path.join(work, name)
     run("rough_superquadric/in.rough_superquadric", d, ranks=ranks,
-        variables={"smooth": smooth, "sigma": sigma, "omega": omega}, tag=name)
+        variables=dict({"smooth": smooth, "sigma": sigma, "omega": omega}, **extra), tag=name)
     runs[name] = table(os.path.join(d, "rough.txt"))
 
 rows = runs["rough"]
@@ -72,6 +76,12 @@ for name, (Rc, gamma), overlap, force in cases:
 
 compare_tables(c, runs["smooth_gw"], runs["smooth_he"], 0.0, "sigma = 0: gw_rough equals hertz_elliptic")
 compare_tables(c, runs["rough_np2"], rows, 1e-13, "2 ranks equal 1 rank")
+# gwPlastic: summits too hard to yield give the elastic law exactly; soft
+# summits (hardness 2e4 Pa) yield and carry less force at the same overlap
+compare_tables(c, runs["plastic_hard"], rows, 0.0, "gwPlastic on, hardness 1e30 Pa: equals the elastic GW law")
+soft = runs["plastic_soft"]
+fe, fp = max(r[3] for r in rows), max(r[3] for r in soft)
+c.true(fp < 0.9 * fe, "gwPlastic on, hardness 2e4 Pa: wall impact peak force %.4g N below the elastic %.4g N" % (fp, fe))
 ref = os.path.join(ROOT, "inputs", "rough_superquadric", "reference", "rough.txt")
 if update:
     save_reference(os.path.join(work, "rough", "rough.txt"), ref, EVERY)
