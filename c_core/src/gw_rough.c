@@ -5,6 +5,7 @@
 #include "dc/status.h"
 #include "scaled_product.h"
 #include <math.h>
+#include <string.h>
 
 
 static int state_finite(const dc_gw_rough_state *s)
@@ -76,4 +77,30 @@ int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, doubl
 int dc_gw_rough_check(double n_asp, dc_param_error *err)
 {
   return dc_param_check("asperityCount", n_asp, 0.0, 1, HUGE_VAL, 1, "(0, inf)", err);
+}
+
+int dc_gw_sphere_pair_init(int law, int feng_variant, double mu, double Estar, double sigma,
+                           dc_gw_sphere_pair *out)
+{
+  int st;
+  if (law == DC_GW_SPHERE_FENG) {
+    dc_feng_law L;
+    dc_feng_pair f;
+    if ((st = dc_feng_init(mu, feng_variant, &L)) != DC_OK || (st = dc_feng_pair_init(&L, Estar, sigma, &f)) != DC_OK)
+      return st;
+    memset(out, 0, sizeof *out);
+    out->law = law;
+    out->feng = f;
+    return DC_OK;
+  }
+  if (law == DC_GW_SPHERE_TABULATED) {
+    dc_gw_table_law L;
+    if ((st = dc_gw_table_init(mu, &L)) != DC_OK) return st;
+    /* writes out->table only on success */
+    if ((st = dc_gw_table_pair_init(&L, Estar, sigma, &out->table)) != DC_OK) return st;
+    memset(&out->feng, 0, sizeof out->feng);
+    out->law = law;
+    return DC_OK;
+  }
+  return DC_EDOM;
 }

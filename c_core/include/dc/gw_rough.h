@@ -29,6 +29,8 @@
 
 #include <float.h>
 #include <math.h>
+#include "dc/feng_rough.h"
+#include "dc/gw_rough_table.h"
 #include "dc/hertz_elliptic.h"
 
 #ifdef __cplusplus
@@ -69,6 +71,40 @@ int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, doubl
 
 /* Parameter check (dc/contract.h): asperityCount n_asp > 0 and finite. */
 int dc_gw_rough_check(double n_asp, dc_param_error *err);
+
+/* The rough-sphere law of one material pair, a setting: the Feng explicit
+   law (dc/feng_rough.h; the default) or the law tabulated from the full
+   solver (dc/gw_rough_table.h). Both take roughnessMu in [1, 50]. */
+enum { DC_GW_SPHERE_FENG = 0, DC_GW_SPHERE_TABULATED = 1 };
+
+typedef struct {
+  int law;                  /* DC_GW_SPHERE_* */
+  dc_feng_pair feng;        /* law == DC_GW_SPHERE_FENG (else zero) */
+  dc_gw_table_pair table;   /* law == DC_GW_SPHERE_TABULATED (else zero) */
+} dc_gw_sphere_pair;
+
+/* Binds law (DC_GW_SPHERE_*; feng_variant DC_FENG_TABLE or DC_FENG_FITTED,
+   read by the Feng law only) at mu to E* and sigma > 0: the status of
+   dc_feng_init / dc_gw_table_init, then of the pair's init; DC_EDOM for
+   another law. *p untouched on error. */
+int dc_gw_sphere_pair_init(int law, int feng_variant, double mu, double Estar, double sigma,
+                           dc_gw_sphere_pair *p);
+
+/* Force and dP/d delta of the bound law at overlap delta (any sign),
+   sqrtR = R^1/2: dc_feng_pair_force or dc_gw_table_pair_force, unchanged. */
+static inline void dc_gw_sphere_pair_force(const dc_gw_sphere_pair *p, double sqrtR, double delta,
+                                           double *P, double *kn)
+{
+  if (p->law == DC_GW_SPHERE_TABULATED) dc_gw_table_pair_force(&p->table, sqrtR, delta, P, kn);
+  else dc_feng_pair_force(&p->feng, sqrtR, delta, P, kn);
+}
+
+/* The overlap, in units of sigma, at and below which the law's force is 0
+   (a wrapper's contact reach): -3 (Feng Eq. 64) or -6 (tabulated). */
+static inline double dc_gw_sphere_reach(int law)
+{
+  return law == DC_GW_SPHERE_TABULATED ? DC_GW_TABLE_X_LO : -3.0;
+}
 
 #ifdef __cplusplus
 }
