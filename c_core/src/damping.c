@@ -13,6 +13,14 @@ int dc_damping_beta(double e, double *beta)
   return DC_OK;
 }
 
+int dc_damping_tsuji_alpha(double e, double *alpha)
+{
+  if (!(e > 0.0 && e <= 1.0)) return DC_EDOM;
+  const double l = log(e);
+  *alpha = -2.2664 * l / sqrt(l * l + 10.1354);
+  return DC_OK;
+}
+
 int dc_punch_stiffness(double Estar, double a, double b, double *k)
 {
   if (!(Estar > 0.0 && isfinite(Estar) && b > 0.0 && a >= b && isfinite(a))) return DC_EDOM;
