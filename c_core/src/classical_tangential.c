@@ -1,0 +1,399 @@
+/* Classical tangential laws of the lecture notes (dc/classical_tangential.h). */
+#include "dc/classical_tangential.h"
+#include "dc/status.h"
+#include <float.h>
+#include <math.h>
+#include <stddef.h>
+
+const dc_history_field dc_classical_tangential_history[DC_CT_HISTORY_NFIELDS] = {
+  {"ct_spring_x", 1}, {"ct_spring_y", 1}, {"ct_spring_z", 1},
+  {"ct_reversal_x", 1}, {"ct_reversal_y", 1}, {"ct_reversal_z", 1},
+};
+
+static int setting_check(const char *name, int v, int hi, const char *range, dc_param_error *err)
+{
+  if (v >= 0 && v <= hi) return DC_OK;
+  err->name = name;
+  err->value = (double)v;
+  err->range = range;
+  return DC_EDOM;
+}
+
+static int uses_stiffness_setting(int law)
+{
+  return law == DC_CT_SPRING_SLIDING || law == DC_CT_SPRING_DASHPOT_SLIDING || law == DC_CT_INCREMENTAL;
+}
+
+static int uses_damping_setting(int law) { return law == DC_CT_SPRING_DASHPOT_SLIDING || law == DC_CT_DI_RENZO; }
+
+static int uses_gstar(const dc_classical_tangential_params *p)
+{
+  if (uses_stiffness_setting(p->law)) return p->stiffness != DC_CT_KT_GIVEN;
+  return p->law == DC_CT_DI_RENZO || p->law == DC_CT_LANGSTON || p->law == DC_CT_ZHENG || p->law == DC_CT_TSUJI;
+}
+
+int dc_classical_tangential_check(const dc_classical_tangential_params *p, dc_param_error *err)
+{
+  int st = setting_check("classicalTangential", p->law, 9,
+                         "{0 coulomb, 1 viscous, 2 viscous_sliding, 3 spring_sliding, 4 spring_dashpot_sliding, "
+                         "5 di_renzo, 6 langston, 7 zheng, 8 tsuji, 9 incremental}",
+                         err);
+  if (st) return st;
+  if (p->law != DC_CT_VISCOUS &&
+      (st = dc_param_check("coefficientFriction", p->mu, 0.0, 0, DBL_MAX, 0, "[0, inf)", err)))
+    return st;
+  if (uses_stiffness_setting(p->law)) {
+    if ((st = setting_check("classicalTangentialStiffness", p->stiffness, 2, "{0 given, 1 ratio, 2 mindlin}", err)))
+      return st;
+    if (p->stiffness == DC_CT_KT_GIVEN && (st = dc_param_check("kt", p->kt, 0.0, 1, DBL_MAX, 0, "(0, inf)", err)))
+      return st;
+  }
+  if (uses_gstar(p) && (st = dc_param_check("youngsModulus", p->Gstar, 0.0, 1, DBL_MAX, 0,
+                                            "G* (from youngsModulus, poissonsRatio) in (0, inf)", err)))
+    return st;
+  if (uses_stiffness_setting(p->law) && p->stiffness == DC_CT_KT_RATIO &&
+      (st = dc_param_check("youngsModulus", p->Estar, 0.0, 1, DBL_MAX, 0, "E* in (0, inf)", err)))
+    return st;
+  int damping = DC_CT_DAMP_NONE;
+  if (uses_damping_setting(p->law)) {
+    if ((st = setting_check("classicalTangentialDamping", p->damping, 3,
+                            "{0 none, 1 given, 2 restitution, 3 normal}", err)))
+      return st;
+    damping = p->damping;
+  }
+  if ((p->law == DC_CT_VISCOUS || p->law == DC_CT_VISCOUS_SLIDING || damping == DC_CT_DAMP_GIVEN) &&
+      (st = dc_param_check("gammat", p->gammat, 0.0, 0, DBL_MAX, 0, "[0, inf)", err)))
+    return st;
+  if (damping == DC_CT_DAMP_RESTITUTION &&
+      (st = dc_param_check("coefficientRestitutionTangential", p->e_t, 0.0, 0, 1.0, 0, "[0, 1]", err)))
+    return st;
+  if (p->law == DC_CT_LANGSTON &&
+      (st = dc_param_check("langstonDamping", p->eta_l, 0.0, 0, DBL_MAX, 0, "[0, inf)", err)))
+    return st;
+  if (p->law == DC_CT_ZHENG &&
+      (st = dc_param_check("tangentialViscoelasticTime", p->t_visc, 0.0, 0, DBL_MAX, 0, "[0, inf)", err)))
+    return st;
+  return DC_OK;
+}
+
+int dc_classical_tangential_init(const dc_classical_tangential_params *p, dc_classical_tangential *m,
+                                 dc_param_error *err)
+{
+  int st = dc_classical_tangential_check(p, err);
+  if (st) return st;
+  dc_classical_tangential r;
+  r.p = *p;
+  r.zeta_t = 0.0;
+  r.ratio = 0.0;
+  if (uses_damping_setting(p->law) && p->damping == DC_CT_DAMP_RESTITUTION) {
+    /* Deen et al.: eta_t = -2 ln e_t (2/7 m K_t)^1/2 / (ln^2 e_t + pi^2)^1/2 */
+    if (p->e_t == 0.0) r.zeta_t = 2.0;
+    else {
+      const double l = log(p->e_t);
+      r.zeta_t = -2.0 * l / sqrt(l * l + M_PI * M_PI);
+    }
+  }
+  if (uses_stiffness_setting(p->law) && p->stiffness == DC_CT_KT_RATIO) {
+    r.ratio = 4.0 * (p->Gstar / p->Estar);
+    if (!(r.ratio > 0.0 && r.ratio <= DBL_MAX)) {
+      err->name = "youngsModulus";
+      err->value = p->Estar;
+      err->range = "4 G* / E* representable";
+      return DC_ERANGE;
+    }
+  }
+  *m = r;
+  return DC_OK;
+}
+
+/* |v| without overflow or underflow of the squares. */
+static double norm3(const double *v)
+{
+  const double s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  if (s >= DBL_MIN && s <= DBL_MAX) return sqrt(s);
+  double mx = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+  if (mx == 0.0 || !isfinite(mx)) return mx;
+  const double a = v[0] / mx, b = v[1] / mx, c = v[2] / mx;
+  return mx * sqrt(a * a + b * b + c * c);
+}
+
+static int finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
+
+/* v minus its part along the unit n, scaled back to its former length
+   (LIGGGHTS' rotation of the shear history). */
+static void turn_into_plane(double *v, const double *n)
+{
+  const double len = norm3(v);
+  if (len == 0.0) return;
+  const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  double w[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
+  const double lw = norm3(w);
+  if (!(lw > 0.0)) { v[0] = v[1] = v[2] = 0.0; return; }
+  const double f = len / lw;
+  for (int k = 0; k < 3; k++) v[k] = w[k] * f;
+  const double lv = norm3(v);
+  if (!isfinite(lv)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
+}
+
+static void project_plane(double *v, const double *n)
+{
+  const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  for (int k = 0; k < 3; k++) v[k] -= vn * n[k];
+}
+
+/* Scales F onto |F| = lim when it exceeds it; 1 if it did. */
+static int limit_force(double *F, double lim)
+{
+  const double f = norm3(F);
+  if (!(f > lim)) return 0;
+  if (lim == 0.0) { F[0] = F[1] = F[2] = 0.0; return 1; }
+  for (int k = 0; k < 3; k++) F[k] = F[k] / f * lim;
+  return 1;
+}
+
+/* K_t of the stiffness setting. */
+static double spring_stiffness(const dc_classical_tangential *m, const dc_patch *patch,
+                               const dc_classical_tangential_contact *c)
+{
+  switch (m->p.stiffness) {
+  case DC_CT_KT_GIVEN: return m->p.kt;
+  case DC_CT_KT_RATIO: return m->ratio * c->kn;
+  default: return 8.0 * m->p.Gstar * patch->a;
+  }
+}
+
+/* eta_t of the damping setting for a spring of stiffness K. */
+static double dashpot(const dc_classical_tangential *m, int damping, double K,
+                      const dc_classical_tangential_contact *c)
+{
+  switch (damping) {
+  case DC_CT_DAMP_GIVEN: return m->p.gammat;
+  case DC_CT_DAMP_RESTITUTION: {
+    double g = m->zeta_t * sqrt(2.0 / 7.0 * c->meff * K);
+    if (!isfinite(g)) g = m->zeta_t * (sqrt(2.0 / 7.0 * c->meff) * sqrt(K));
+    return g;
+  }
+  case DC_CT_DAMP_NORMAL: return c->gamman;
+  default: return 0.0;
+  }
+}
+
+/* Notes 4.5-4.7: F = K s + eta v, |F| <= lim; a sliding spring is set to
+   (F - eta v)/K. */
+static void spring_dashpot(double K, double eta, double lim, const double *du, const double *v, double *s,
+                           double *F, double *kt, int *sliding)
+{
+  double Fv[3];
+  for (int k = 0; k < 3; k++) {
+    s[k] += du[k];
+    Fv[k] = eta * v[k];
+    F[k] = K * s[k] + Fv[k];
+  }
+  *sliding = limit_force(F, lim);
+  *kt = *sliding ? 0.0 : K;
+  if (*sliding) {
+    if (K > 0.0)
+      for (int k = 0; k < 3; k++) s[k] = (F[k] - Fv[k]) / K;
+    else
+      s[0] = s[1] = s[2] = 0.0;
+  }
+}
+
+/* Notes 4.7, LTH and ZZYt: the elastic force of the spring s (capped at
+   d = 3 lim / (2 K0)) and its stiffness K0 (1 - x)^1/2. */
+static void langston_spring(double K0, double lim, const double *du, double *s, double *Fe, double *kt,
+                            double *d, int *at_limit)
+{
+  for (int k = 0; k < 3; k++) s[k] += du[k];
+  *at_limit = 0;
+  if (!(K0 > 0.0) || !(lim > 0.0)) {
+    s[0] = s[1] = s[2] = 0.0;
+    Fe[0] = Fe[1] = Fe[2] = 0.0;
+    *kt = 0.0;
+    *d = 0.0;
+    *at_limit = lim == 0.0;
+    return;
+  }
+  *d = 1.5 * (lim / K0);
+  const double r = norm3(s);
+  double x = r / *d;
+  if (x >= 1.0) {
+    for (int k = 0; k < 3; k++) s[k] = s[k] / r * *d;
+    x = 1.0;
+    *at_limit = 1;
+  }
+  /* mu F_n (1 - (1 - x)^3/2) */
+  const double f = x >= 1.0 ? lim : -lim * expm1(1.5 * log1p(-x));
+  for (int k = 0; k < 3; k++) Fe[k] = r > 0.0 ? s[k] / (x >= 1.0 ? *d : r) * f : 0.0;
+  *kt = K0 * sqrt(1.0 - x);
+}
+
+/* Notes 4.8, Walton-Braun, integrated exactly along the step: F the force,
+   R the force at the last reversal, lim = mu F_n. */
+static void incremental_step(double K0, double lim, const double *du, double *F, double *R, double *kt,
+                             int *sliding)
+{
+  if (!(lim > 0.0) || !(K0 > 0.0)) {
+    /* no friction, or no spring: nothing can be held */
+    F[0] = F[1] = F[2] = 0.0;
+    R[0] = R[1] = R[2] = 0.0;
+    *kt = 0.0;
+    *sliding = lim == 0.0;
+    return;
+  }
+  limit_force(F, lim);   /* a smaller normal force clips the state */
+  limit_force(R, lim);
+  const double L = norm3(du);
+  double e[3];
+  if (L > 0.0) {
+    for (int k = 0; k < 3; k++) e[k] = du[k] / L;
+    const double rev = du[0] * (F[0] - R[0]) + du[1] * (F[1] - R[1]) + du[2] * (F[2] - R[2]);
+    if (rev < 0.0)
+      for (int k = 0; k < 3; k++) R[k] = F[k];
+  } else {
+    const double f = norm3(F);
+    if (f > 0.0) for (int k = 0; k < 3; k++) e[k] = F[k] / f;
+    else e[0] = e[1] = e[2] = 0.0;
+  }
+  const double T = F[0] * e[0] + F[1] * e[1] + F[2] * e[2];
+  const double Ts = R[0] * e[0] + R[1] * e[1] + R[2] * e[2];
+  const double D = lim - Ts;   /* >= 0 since |R| <= lim */
+  double u0;                   /* 1 - (T - T*)/D in [0, 1] */
+  if (T - Ts <= 0.0) u0 = 1.0;
+  else if (D > 0.0) u0 = fmax(0.0, 1.0 - (T - Ts) / D);
+  else u0 = 0.0;
+  /* du/dx = -K0 u^1/3 / D: u^2/3 = u0^2/3 - 2 K0 x / (3 D); dT = D (u0 - u) */
+  double dT = 0.0, u1 = u0;
+  if (L > 0.0 && u0 > 0.0 && D > 0.0) {
+    const double c23 = cbrt(u0 * u0);
+    const double y = 2.0 * K0 * (L / D) / (3.0 * c23);   /* fraction of u0^2/3 used */
+    if (y >= 1.0 || !isfinite(y)) { dT = D * u0; u1 = 0.0; }
+    else {
+      dT = -D * u0 * expm1(1.5 * log1p(-y));
+      u1 = u0 * (1.0 - y) * sqrt(1.0 - y);
+    }
+  }
+  for (int k = 0; k < 3; k++) F[k] += dT * e[k];
+  *sliding = limit_force(F, lim) || u1 == 0.0;
+  *kt = *sliding ? 0.0 : K0 * cbrt(u1);
+}
+
+int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patch *patch,
+                                 const dc_classical_tangential_contact *c, const double n[3],
+                                 const double du[3], const double vt[3], double dt,
+                                 dc_classical_tangential_state *h, dc_classical_tangential_out *out)
+{
+  const int law = m->p.law;
+  /* domain */
+  if (!(patch->a >= 0.0 && patch->a <= DBL_MAX) || !(patch->F_bound >= 0.0 && patch->F_bound <= DBL_MAX) ||
+      !isfinite(patch->formed))
+    return DC_EDOM;
+  if (!finite3(n) || !finite3(vt)) return DC_EDOM;
+  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
+  if (du ? !finite3(du) : !(dt > 0.0 && dt <= DBL_MAX)) return DC_EDOM;
+  if (!finite3(h->spring) || !finite3(h->rev)) return DC_EDOM;
+  if (!(c->meff > 0.0 && c->meff <= DBL_MAX) || !(c->kn >= 0.0 && c->kn <= DBL_MAX) ||
+      !(c->gamman >= 0.0 && c->gamman <= DBL_MAX))
+    return DC_EDOM;
+  double d[3], v[3] = {vt[0], vt[1], vt[2]};
+  if (du) {
+    d[0] = du[0]; d[1] = du[1]; d[2] = du[2];
+  } else {
+    for (int k = 0; k < 3; k++) d[k] = vt[k] * dt;
+    if (!finite3(d)) return DC_ERANGE;
+  }
+
+  dc_classical_tangential_out o;
+  dc_classical_tangential_state s = *h;
+  o.Ft[0] = o.Ft[1] = o.Ft[2] = 0.0;
+  o.kt = o.gammat = 0.0;
+  o.sliding = 0;
+  if (!(patch->formed != 0.0)) {
+    s.spring[0] = s.spring[1] = s.spring[2] = 0.0;
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    *h = s;
+    *out = o;
+    return DC_OK;
+  }
+  project_plane(d, n);
+  project_plane(v, n);
+  turn_into_plane(s.spring, n);
+  turn_into_plane(s.rev, n);
+  const double lim = m->p.mu * patch->F_bound;
+  if (!(lim <= DBL_MAX)) return DC_ERANGE;
+
+  switch (law) {
+  case DC_CT_COULOMB: {
+    /* notes 4.2: F = mu F_n v/|v| */
+    const double vv = norm3(v);
+    if (vv > 0.0) {
+      for (int k = 0; k < 3; k++) o.Ft[k] = v[k] / vv * lim;
+      o.sliding = 1;
+    }
+    break;
+  }
+  case DC_CT_VISCOUS:
+  case DC_CT_VISCOUS_SLIDING:
+    /* notes 4.3, 4.4: F = eta_t v (|F| <= mu F_n) */
+    o.gammat = m->p.gammat;
+    for (int k = 0; k < 3; k++) o.Ft[k] = o.gammat * v[k];
+    if (law == DC_CT_VISCOUS_SLIDING) o.sliding = limit_force(o.Ft, lim);
+    break;
+  case DC_CT_SPRING_SLIDING:
+  case DC_CT_SPRING_DASHPOT_SLIDING:
+  case DC_CT_DI_RENZO:
+  case DC_CT_TSUJI: {
+    /* notes 4.5-4.7: F = K s + eta v, |F| <= mu F_n */
+    double K, eta;
+    if (law == DC_CT_DI_RENZO) K = 16.0 / 3.0 * m->p.Gstar * patch->a;
+    else if (law == DC_CT_TSUJI) K = 8.0 * m->p.Gstar * patch->a;
+    else K = spring_stiffness(m, patch, c);
+    if (law == DC_CT_TSUJI) eta = c->gamman;
+    else if (law == DC_CT_SPRING_SLIDING) eta = 0.0;
+    else eta = dashpot(m, m->p.damping, K, c);
+    if (!(K <= DBL_MAX) || !(eta <= DBL_MAX)) return DC_ERANGE;
+    o.gammat = eta;
+    spring_dashpot(K, eta, lim, d, v, s.spring, o.Ft, &o.kt, &o.sliding);
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    break;
+  }
+  case DC_CT_LANGSTON:
+  case DC_CT_ZHENG: {
+    /* notes 4.7: LTH elastic force; LTH or ZZYt viscous force */
+    const double K0 = 8.0 * m->p.Gstar * patch->a;
+    if (!(K0 <= DBL_MAX)) return DC_ERANGE;
+    double Fe[3], kt, dlim;
+    int at_limit;
+    langston_spring(K0, lim, d, s.spring, Fe, &kt, &dlim, &at_limit);
+    double eta = 0.0;
+    if (law == DC_CT_LANGSTON) {
+      eta = m->p.eta_l * sqrt(4.0 * c->meff * kt);
+      if (!isfinite(eta)) eta = m->p.eta_l * 2.0 * (sqrt(c->meff) * sqrt(kt));
+    } else if (dlim > 0.0) {
+      const double A = m->p.t_visc;
+      const double f = 1.0 - 0.4 * A * (norm3(v) / dlim);
+      eta = f > 0.0 ? A * f * kt : 0.0;
+    }
+    o.gammat = eta;
+    for (int k = 0; k < 3; k++) o.Ft[k] = Fe[k] + eta * v[k];
+    o.sliding = limit_force(o.Ft, lim) || at_limit;
+    o.kt = at_limit ? 0.0 : kt;
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    break;
+  }
+  default: {
+    /* notes 4.8, corrected: Walton-Braun incremental slip */
+    const double K0 = spring_stiffness(m, patch, c);
+    if (!(K0 <= DBL_MAX)) return DC_ERANGE;
+    incremental_step(K0, lim, d, s.spring, s.rev, &o.kt, &o.sliding);
+    for (int k = 0; k < 3; k++) o.Ft[k] = s.spring[k];
+    break;
+  }
+  }
+  if (!finite3(o.Ft) || !finite3(s.spring) || !finite3(s.rev) || !isfinite(o.kt) || !isfinite(o.gammat))
+    return DC_ERANGE;
+  *h = s;
+  *out = o;
+  return DC_OK;
+}
