@@ -24,6 +24,7 @@
 #include <cfloat>
 #include <cstdio>
 #include <string>
+#include <vector>
 #include "atom.h"
 #include "contact_frame.h"
 #include "contact_models.h"
@@ -217,6 +218,43 @@ protected:
     applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
   }
 
+  /* The settings and the per-type-pair parameters of a plastic law (fields
+     K_v, c_h, c_A; dc/jamari_ep.h, dc/gw_rough_plastic.h): property hardness
+     [Pa] per type, a pair taking the softer type's with its poissonsRatio.
+     Settings plasticityKv (0: the law's default from nu), plasticityCh,
+     plasticityCa. */
+  struct Plasticity {
+    double kv = 0.0, ch = 1.0, ca = 108.0;
+    void registerSettings(Settings &settings, double ch_default, double ca_default)
+    {
+      settings.registerDoubleSetting("plasticityKv", kv, 0.0);
+      settings.registerDoubleSetting("plasticityCh", ch, ch_default);
+      settings.registerDoubleSetting("plasticityCa", ca, ca_default);
+    }
+  };
+  template<class P>
+  void plasticParams(PropertyRegistry &registry, const char *caller, const Plasticity &set,
+                     P (*defaults)(double, double), int (*check)(const P *, dc_param_error *), std::vector<P> &out)
+  {
+    registry.registerProperty("hardness", &createHardness, caller);
+    registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, caller);
+    const double *H = registry.getVectorProperty("hardness", caller)->data;
+    const double *nu = registry.getVectorProperty("poissonsRatio", caller)->data;
+    const int n = registry.max_type();
+    out.assign((n + 1) * (n + 1), P());
+    for (int i = 1; i <= n; i++)
+      for (int j = 1; j <= n; j++) {
+        const int soft = H[j] < H[i] ? j : i;
+        P p = defaults(H[soft], nu[soft]);
+        if (set.kv != 0.0) p.K_v = set.kv;
+        p.c_h = set.ch;
+        p.c_A = set.ca;
+        dc_param_error err;
+        if (check(&p, &err) != DC_OK) stopParam(err, i, j);
+        out[i * (n + 1) + j] = p;
+      }
+  }
+
   /* Publishes the patch of a contact (when stored). */
   void publish(SurfacesCloseData &d, const dc_contact &c, const double *axis)
   {
@@ -240,6 +278,10 @@ protected:
 #endif
 
 private:
+  static VectorProperty *createHardness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypeProperty(registry, "hardness", caller, sanity_checks, 0.0, HUGE_VAL);
+  }
   static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);

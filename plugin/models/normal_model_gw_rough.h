@@ -57,8 +57,7 @@ class NormalModel<GW_ROUGH> : public DcNormalModel
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
-    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false), kv(0.0),
-    ch(1.0), ca(108.0), ntypes(0)
+    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false), ntypes(0)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
@@ -71,9 +70,7 @@ public:
     settings.registerOnOff("gwElliptic", gwElliptic, false);
     settings.registerOnOff("fengFitted", fengFitted, false);
     settings.registerOnOff("gwPlastic", gwPlastic, false);
-    settings.registerDoubleSetting("plasticityKv", kv, 0.0);
-    settings.registerDoubleSetting("plasticityCh", ch, 1.0);
-    settings.registerDoubleSetting("plasticityCa", ca, 108.0);
+    plasticity.registerSettings(settings, 1.0, 108.0);
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
@@ -103,23 +100,8 @@ public:
         for (int j = 1; j <= ntypes; j++)
           if (dc_gw_rough_check(n_asp[i][j], &err))
             stopParam(err, i, j);
-      if (gwPlastic) {
-        registry.registerProperty("hardness", &createHardness, caller);
-        registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, caller);
-        const double *H = registry.getVectorProperty("hardness", caller)->data;
-        const double *nu = registry.getVectorProperty("poissonsRatio", caller)->data;
-        plastic.assign((ntypes + 1) * (ntypes + 1), dc_gw_plastic_params());
-        for (int i = 1; i <= ntypes; i++)
-          for (int j = 1; j <= ntypes; j++) {
-            const int soft = H[j] < H[i] ? j : i;
-            dc_gw_plastic_params p = dc_gw_plastic_default_params(H[soft], nu[soft]);
-            if (kv != 0.0) p.K_v = kv;
-            p.c_h = ch;
-            p.c_A = ca;
-            if (dc_gw_plastic_check(&p, &err)) stopParam(err, i, j);
-            plastic[i * (ntypes + 1) + j] = p;
-          }
-      }
+      if (gwPlastic)
+        plasticParams(registry, caller, plasticity, &dc_gw_plastic_default_params, &dc_gw_plastic_check, plastic);
       return;
     }
     registry.registerProperty("roughnessMu", &createMu, caller);
@@ -246,10 +228,6 @@ private:
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "roughnessMu", caller, sanity_checks);
   }
-  static VectorProperty *createHardness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypeProperty(registry, "hardness", caller, sanity_checks, 0.0, HUGE_VAL);
-  }
   static MatrixProperty *createAsperityCount(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "asperityCount", caller, sanity_checks, 1e-300);
@@ -257,7 +235,7 @@ private:
 
   double **roughness, **mu, **n_asp;
   bool gwElliptic, fengFitted, gwPlastic;
-  double kv, ch, ca;
+  Plasticity plasticity;
   int ntypes;
   std::vector<dc_feng_pair> laws;
   std::vector<dc_gw_plastic_params> plastic;

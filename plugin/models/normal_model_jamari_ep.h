@@ -44,8 +44,7 @@ class NormalModel<JAMARI_EP> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    DcNormalModel(lmp, hsetup, c, "jamari_ep"), kv(0.0), ch(DC_JAMARI_CH_DEFAULT),
-    ca(DC_JAMARI_CA_DEFAULT), history_offset(-1), ntypes(0)
+    DcNormalModel(lmp, hsetup, c, "jamari_ep"), history_offset(-1), ntypes(0)
   {
     for (int k = 0; k < DC_JAMARI_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_jamari_history[k].name, dc_jamari_history[k].flips ? "1" : "0");
@@ -56,34 +55,18 @@ public:
   void registerSettings(Settings &settings)
   {
     DcNormalModel::registerSettings(settings);
-    settings.registerDoubleSetting("plasticityKv", kv, 0.0);
-    settings.registerDoubleSetting("plasticityCh", ch, DC_JAMARI_CH_DEFAULT);
-    settings.registerDoubleSetting("plasticityCa", ca, DC_JAMARI_CA_DEFAULT);
+    plasticity.registerSettings(settings, DC_JAMARI_CH_DEFAULT, DC_JAMARI_CA_DEFAULT);
   }
 
   void connectToProperties(PropertyRegistry &registry)
   {
     DcNormalModel::connectToProperties(registry);
-    const char *caller = "model jamari_ep";
-    registry.registerProperty("hardness", &createHardness, caller);
-    registry.registerProperty("poissonsRatio", &MODEL_PARAMS::createPoissonsRatio, caller);
-    const double *H = registry.getVectorProperty("hardness", caller)->data;
-    const double *nu = registry.getVectorProperty("poissonsRatio", caller)->data;
+    plasticParams(registry, "model jamari_ep", plasticity, &dc_jamari_defaults, &dc_jamari_check, params);
     ntypes = registry.max_type();
-    params.assign((ntypes + 1) * (ntypes + 1), dc_jamari_params());
     yield_ratio.assign((ntypes + 1) * (ntypes + 1), 0.0);
     for (int i = 1; i <= ntypes; i++)
-      for (int j = 1; j <= ntypes; j++) {
-        const int soft = H[j] < H[i] ? j : i;
-        dc_jamari_params p = dc_jamari_defaults(H[soft], nu[soft]);
-        if (kv != 0.0) p.K_v = kv;
-        p.c_h = ch;
-        p.c_A = ca;
-        dc_param_error err;
-        if (dc_jamari_check(&p, &err) != DC_OK) stopParam(err, i, j);
-        params[i * (ntypes + 1) + j] = p;
-        yield_ratio[i * (ntypes + 1) + j] = dc_jamari_circle_yield_ratio(Yeff[i][j], &p);
-      }
+      for (int j = 1; j <= ntypes; j++)
+        yield_ratio[i * (ntypes + 1) + j] = dc_jamari_circle_yield_ratio(Yeff[i][j], &params[i * (ntypes + 1) + j]);
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -142,12 +125,7 @@ public:
   }
 
 private:
-  static VectorProperty *createHardness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypeProperty(registry, "hardness", caller, sanity_checks, 0.0, HUGE_VAL);
-  }
-
-  double kv, ch, ca;
+  Plasticity plasticity;
   int history_offset, ntypes;
   std::vector<dc_jamari_params> params;
   std::vector<double> yield_ratio;   /* delta_n1 / R of sphere contacts per type pair */
