@@ -123,16 +123,15 @@ static int finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) &&
    (LIGGGHTS' rotation of the shear history). */
 static void turn_into_plane(double *v, const double *n)
 {
-  const double len = norm3(v);
-  if (len == 0.0) return;
   const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  if (vn == 0.0) return;   /* in the plane already (or zero) */
+  const double len = norm3(v);
   double w[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
   const double lw = norm3(w);
   if (!(lw > 0.0)) { v[0] = v[1] = v[2] = 0.0; return; }
   const double f = len / lw;
   for (int k = 0; k < 3; k++) v[k] = w[k] * f;
-  const double lv = norm3(v);
-  if (!isfinite(lv)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
+  if (!finite3(v)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
 }
 
 static void project_plane(double *v, const double *n)
@@ -319,7 +318,7 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
   project_plane(d, n);
   project_plane(v, n);
   turn_into_plane(s.spring, n);
-  turn_into_plane(s.rev, n);
+  if (law == DC_CT_INCREMENTAL) turn_into_plane(s.rev, n);
   const double lim = m->p.mu * patch->F_bound;
   if (!(lim <= DBL_MAX)) return DC_ERANGE;
 
