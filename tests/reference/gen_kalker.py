@@ -54,13 +54,19 @@ Rows of kalker.csv (beside this script):
       nu = 0, 0.25, 0.5, off that grid);
     check, ...  (same columns) at the published table's axis ratios (off the
       grid), nu = 0, 0.25, 0.5, 0.3: not used by the law, tests of its
-      interpolation.
+      interpolation;
+    far, ...  a/b = 0.01, 0.03, 30, 100 (degrees 12..24; the expansion
+      converges slowly there, e_ij says how well): the error of the law's
+      asymptotes beyond the grid.
 e_ij: estimated absolute error of c_ij.
 
 Usage:
     python3 gen_kalker.py [--jobs 2]        # writes kalker.csv (about 30 min on 2 idle cores)
     python3 gen_kalker.py --table            # prints the table of rolling_kalker.c (from kalker.csv)
+    python3 gen_kalker.py --far              # only the far rows, appended to kalker.csv
     python3 gen_kalker.py --point 0.5 0.3    # one case, with its convergence history
+    python3 gen_kalker.py --oblique 2 0.25 45   # rolling at 45 degrees to the axis a of a/b = 2
+    python3 gen_kalker.py --oblique-table    # writes kalker_oblique.csv (7 oblique cases)
 Needs numpy (Debian: python3-numpy).
 """
 import math
@@ -233,9 +239,65 @@ class Galin:
                 -a * b * (a * (KXe @ qf) - b * (KYo @ pf)), a * b * (a * (KXe @ qe) - b * (KYo @ pe)))
 
 
+def oblique(g, alpha, nu, n):
+    """Rolling at angle alpha to the axis a of an ellipse a/b = g (c = 1,
+    G = 1): the 3x3 matrix C with F_x = -(C11 xi + C12 eta + C13 phi),
+    F_y = -(C21 xi + C22 eta + C23 phi), M_z = C31 xi + C32 eta - C33 phi in
+    the rolling frame (x along the rolling direction). Kalker's form is the
+    alpha = 0 case (C12 = C13 = C21 = C31 = 0, C32 = C23). Same method as
+    Galin, without the parity split: u in the rolling frame is
+    (xi x_r - phi x_r y_r + f(y_r), eta x_r + phi x_r^2/2 + g(y_r)), the
+    leading edge the half of the boundary whose normal has e.n > 0."""
+    a, b = math.sqrt(g), 1 / math.sqrt(g)
+    idx = disc_index(n, 0) + disc_index(n, 1)
+    pts = []
+    nr = n // 2 + 3
+    for k in range(nr):
+        rho = 0.97 * math.sin(math.pi / 2 * (k + 0.5) / nr)
+        na = 2 * n + 3
+        for j in range(na):
+            t = 2 * math.pi * (j + 0.5 * (k % 2) + 0.25) / na
+            pts.append((a * rho * math.cos(t), b * rho * math.sin(t)))
+    pts = np.array(pts)
+    (Jcc, Jss, Jcs), = displacement_integrals(n, a, b, pts, [idx], 6 * n + 160, n + 14)
+    N = len(idx)
+    Uxp, Uxq = ((1 - nu) * (Jcc + Jss) + nu * Jcc) / np.pi, nu * Jcs / np.pi
+    Uyp, Uyq = nu * Jcs / np.pi, ((1 - nu) * (Jcc + Jss) + nu * Jss) / np.pi
+    ca, sa = math.cos(alpha), math.sin(alpha)
+    x, y = pts[:, 0], pts[:, 1]
+    xr, yr = x * ca + y * sa, -x * sa + y * ca
+    LY = npleg.legvander(yr / math.sqrt(a * a * sa * sa + b * b * ca * ca), n)
+    M, nf = len(x), n + 1
+    E = np.zeros((2 * M, 2 * N + 2 * nf))
+    E[:M, :N], E[:M, N:2 * N], E[:M, 2 * N:2 * N + nf] = ca * Uxp + sa * Uyp, ca * Uxq + sa * Uyq, -LY
+    E[M:, :N], E[M:, N:2 * N], E[M:, 2 * N + nf:] = -sa * Uxp + ca * Uyp, -sa * Uxq + ca * Uyq, -LY
+    U, S, Vt = np.linalg.svd(E, full_matrices=False)
+    rank = E.shape[1] - 2 * nf
+    gx, gw = npleg.leggauss(3 * (n + 1))
+    tk = math.atan2(sa / b, ca / a) + np.pi / 2 * gx
+    Bl = disc_basis(n, np.cos(tk), np.sin(tk), idx) * np.sqrt(np.pi / 2 * gw)[:, None]
+    Le = np.zeros((2 * len(tk), E.shape[1]))
+    Le[:len(tk), :N], Le[len(tk):, N:2 * N] = Bl, Bl
+    Z = Vt[rank:].T
+    K0, KX, KY = area_integrals(n, idx)
+    res = []
+    for rx, ry in [(xr, 0 * xr), (0 * xr, xr), (-xr * yr, xr * xr / 2)]:
+        r = np.concatenate([rx, ry])
+        w0 = Vt[:rank].T @ ((U[:, :rank].T @ r) / S[:rank])
+        w = w0 + Z @ np.linalg.lstsq(Le @ Z, -Le @ w0, rcond=None)[0]
+        p, q = w[:N], w[N:2 * N]
+        Fx, Fy = a * b * (K0 @ p), a * b * (K0 @ q)
+        res.append((ca * Fx + sa * Fy, -sa * Fx + ca * Fy, a * b * (a * (KX @ q) - b * (KY @ p))))
+    return np.array([[-res[0][0], -res[1][0], -res[2][0]],
+                     [-res[0][1], -res[1][1], -res[2][1]],
+                     [res[0][2], res[1][2], -res[2][2]]]), S[rank] / S[0]
+
+
 def aitken(x0, x1, x2):
+    """Aitken's delta^2 where the last steps shrink geometrically (ratio <=
+    0.8, same sign); else the last value (the sequence has settled)."""
     d1, d2 = x1 - x0, x2 - x1
-    if d2 == d1 or d1 * d2 <= 0 or abs(d2) >= abs(d1):
+    if d1 * d2 <= 0 or abs(d2) > 0.8 * abs(d1):
         return x2
     return x2 - d2 * d2 / (d2 - d1)
 
@@ -266,7 +328,10 @@ def extrapolate(g, nus, degrees=(8, 12, 16, 20), tol=2e-7, log=None):
     for i in range(len(nus)):
         seq = [[h[i][j] for h in hist] for j in range(5)]
         ext = [aitken(*s[-3:]) for s in seq]
-        err = [abs(aitken(*s[-3:]) - aitken(*s[-4:-1])) for s in seq]
+        # change of the extrapolation from the previous three, and the last
+        # step where the extrapolation was not used
+        err = [abs(aitken(*s[-3:]) - aitken(*s[-4:-1])) + (abs(s[-1] - s[-2]) if aitken(*s[-3:]) == s[-1] else 0.0)
+               for s in seq]
         c23 = 0.5 * (ext[2] + ext[4])
         e23 = 0.5 * abs(ext[2] - ext[4]) + max(err[2], err[4])
         rows.append((ext[0], ext[1], c23, ext[3], err[0], err[1], e23, err[3]))
@@ -297,10 +362,15 @@ def check_nus():
     return [0.0, 0.25, 0.5, 0.3]
 
 
+def far_ratios():
+    """Beyond the table, where the law uses the asymptotes: slower convergence."""
+    return [0.01, 0.03, 30.0, 100.0]
+
+
 def work(item):
     tag, g, nus = item
     t0 = time.time()
-    rows = extrapolate(g, nus)
+    rows = extrapolate(g, nus, degrees=(12, 16, 20, 24) if tag == "far" else (8, 12, 16, 20))
     lines = ["%s,%.17g,%.17g,%s" % (tag, g, nu, ",".join("%.12g" % v for v in r)) for nu, r in zip(nus, rows)]
     sys.stderr.write("%s g=%.6g done in %.0f s\n" % (tag, g, time.time() - t0))
     with open(os.path.join(HERE, "kalker.partial"), "a") as f:
@@ -311,6 +381,7 @@ def work(item):
 def write_table(jobs):
     items = [("node", g, nu_nodes()) for g in node_ratios()]
     items += [("check", g, check_nus()) for g in check_ratios()]
+    items += [("far", g, [0.0, 0.25, 0.5]) for g in far_ratios()]
     # slow (elongated) cases first
     items.sort(key=lambda it: -abs(math.log(it[1])))
     if jobs > 1:
@@ -319,12 +390,13 @@ def write_table(jobs):
             results = pool.map(work, items, chunksize=1)
     else:
         results = [work(it) for it in items]
-    order = sorted(range(len(items)), key=lambda i: (items[i][0] != "node", items[i][1]))
+    order = sorted(range(len(items)), key=lambda i: ({"node": 0, "check": 1}.get(items[i][0], 2), items[i][1]))
     with open(os.path.join(HERE, "kalker.csv"), "w") as f:
         f.write("# generated by gen_kalker.py: Kalker's linear-theory creep coefficients, Galin polynomial\n")
         f.write("# traction expansion (degree 8..20) with least leading-edge traction, extrapolated in the degree\n")
         f.write("# tag,a/b,nu,c11,c22,c23,c33,e11,e22,e23,e33 (a along rolling; e: estimated absolute error)\n")
-        f.write("# node rows: the law's grid (ln(a/b) at 17 Chebyshev-Lobatto points of [ln 0.1, ln 10]); check rows: off it\n")
+        f.write("# node rows: the law's grid (ln(a/b) at 17 Chebyshev-Lobatto points of [ln 0.1, ln 10]); check rows: off it;\n")
+        f.write("# far rows: beyond the grid (degree 12..24; convergence slower there, see e_ij)\n")
         for i in order:
             for line in results[i]:
                 f.write(line + "\n")
@@ -361,10 +433,46 @@ def main():
     if args and args[0] == "--table":
         c_table()
         return
+    if args and args[0] == "--oblique-table":
+        cases = [(2.0, 0.25, 20.0), (2.0, 0.25, 45.0), (2.0, 0.0, 45.0), (2.0, 0.5, 45.0),
+                 (5.0, 0.25, 20.0), (5.0, 0.25, 45.0), (5.0, 0.25, 70.0)]
+        with open(os.path.join(HERE, "kalker_oblique.csv"), "w") as f:
+            f.write("# generated by gen_kalker.py --oblique-table: rolling at alpha to the axis a of an ellipse\n")
+            f.write("# a/b = g (c = 1, G = 1), the expansion at degree 16 (change from degree 12 in the last column)\n")
+            f.write("# F_x = -(C11 xi + C12 eta + C13 phi), F_y = -(C21 xi + C22 eta + C23 phi), M_z = C31 xi + C32 eta - C33 phi\n")
+            f.write("# a/b,nu,alpha_deg,C11,C22,C23,C33,C32,C12,C21,C13,C31,max_change\n")
+            for g, nu, adeg in cases:
+                C12, _ = oblique(g, math.radians(adeg), nu, 12)
+                C16, _ = oblique(g, math.radians(adeg), nu, 16)
+                ch = float(np.max(np.abs(C16 - C12)))
+                vals = [C16[0, 0], C16[1, 1], C16[1, 2], C16[2, 2], C16[2, 1], C16[0, 1], C16[1, 0], C16[0, 2], C16[2, 0]]
+                f.write("%g,%g,%g,%s,%.2e\n" % (g, nu, adeg, ",".join("%.8g" % v for v in vals), ch))
+                f.flush()
+        return
+    if args and args[0] == "--oblique":
+        g, nu, alpha = float(args[1]), float(args[2]), math.radians(float(args[3]))
+        for n in (8, 12, 16):
+            C, null = oblique(g, alpha, nu, n)
+            print("n=%d (null-space sv %.1e):" % (n, null))
+            for row in C:
+                print("   " + " ".join("%12.6f" % v for v in row), flush=True)
+        return
     if args and args[0] == "--point":
         g, nu = float(args[1]), float(args[2])
         r = extrapolate(g, [nu], log=lambda s: print(s, flush=True))[0]
         print("c11 %.9f c22 %.9f c23 %.9f c33 %.9f  errors %.1e %.1e %.1e %.1e" % r)
+        return
+    if args and args[0] == "--far":
+        # only the far rows, appended to an existing kalker.csv
+        import multiprocessing as mp
+        items = [("far", g, [0.0, 0.25, 0.5]) for g in far_ratios()]
+        with mp.Pool(2) as pool:
+            results = pool.map(work, items, chunksize=1)
+        with open(os.path.join(HERE, "kalker.csv"), "a") as f:
+            f.write("# far rows: beyond the grid (degree 12..24; convergence slower there, see e_ij)\n")
+            for lines in results:
+                for line in lines:
+                    f.write(line + "\n")
         return
     jobs = int(args[1]) if args and args[0] == "--jobs" else 1
     write_table(jobs)
