@@ -234,37 +234,70 @@ static void table_edges(const double lnc[4][DC_KALKER_NODES], double nu, double 
   hi[4] = d / KALKER_LN10 * log(1600.0) / 2.0;
 }
 
-/* c_ij at g from a series and its edge scales. */
-static void coefficients(const double lnc[4][DC_KALKER_NODES], const double lo[4], const double hi[5],
-                         double nu, double g, dc_kalker_coef *c)
+/* Beyond the table (x = ln(g)/ln 10 outside [-1, 1]): the asymptotes and
+   the edge scales into v; 0 inside. */
+static int beyond(double g, double x, double nu, const double lo[4], const double hi[5], double v[4])
 {
-  double v[4];
-  const double x = log(g) / KALKER_LN10;
+  double a[4];
   if (x < -1.0) {
-    double a[4];
     asym_small(g, nu, a);
     const double r = g / 0.1, rh = sqrt(r);
     v[0] = a[0] * (1.0 + (lo[0] - 1.0) * r);
     v[1] = a[1] * (1.0 + (lo[1] - 1.0) * r);
     v[2] = a[2] * (1.0 + (lo[2] - 1.0) * rh);
     v[3] = a[3] * (1.0 + (lo[3] - 1.0) * r);
-  } else if (x > 1.0) {
+    return 1;
+  }
+  if (x > 1.0) {
     /* the asymptotes' remainder is O(Lambda^-2): the edge scale decays so */
-    double a[4];
     asym_large(g, nu, a);
     const double Le = log(1600.0), L = log(16.0) + 2.0 * log(g), r = (Le / L) * (Le / L);
     v[0] = a[0] * (1.0 + (hi[0] - 1.0) * r);
     v[1] = a[1] * (1.0 + (hi[1] - 1.0) * r);
     v[2] = a[2] * (1.0 + (hi[2] - 1.0) * r);
     v[3] = hi[3] * pow(L / Le, hi[4]);
-  } else {
-    series_lnc(lnc, x, v);
-    for (int j = 0; j < 4; j++) v[j] = exp(v[j]);
+    return 1;
   }
+  return 0;
+}
+
+static void set_coef(const double v[4], dc_kalker_coef *c)
+{
   c->c11 = v[0];
   c->c22 = v[1];
   c->c23 = v[2];
   c->c33 = v[3];
+}
+
+/* c_ij at g from the series (slow path). */
+static void coefficients_series(const double lnc[4][DC_KALKER_NODES], const double lo[4], const double hi[5],
+                                double nu, double g, dc_kalker_coef *c)
+{
+  double v[4];
+  const double x = log(g) / KALKER_LN10;
+  if (!beyond(g, x, nu, lo, hi, v)) {
+    series_lnc(lnc, x, v);
+    for (int j = 0; j < 4; j++) v[j] = exp(v[j]);
+  }
+  set_coef(v, c);
+}
+
+/* c_ij at g from a material's uniform table: 4-point Lagrange in ln g. */
+static void coefficients_fine(const dc_rolling_material *rm, double g, dc_kalker_coef *c)
+{
+  double v[4];
+  const double x = log(g) / KALKER_LN10;
+  if (!beyond(g, x, rm->nu, rm->edge_lo, rm->edge_hi, v)) {
+    const double u = (x + 1.0) * (0.5 * (DC_KALKER_FINE - 1));
+    int k = (int)u;
+    if (k < 1) k = 1;
+    if (k > DC_KALKER_FINE - 3) k = DC_KALKER_FINE - 3;
+    const double t = u - k, tm = t - 1.0, tp = t + 1.0, t2 = t - 2.0;
+    const double w0 = -t * tm * t2 / 6.0, w1 = 0.5 * tp * tm * t2, w2 = -0.5 * tp * t * t2, w3 = tp * t * tm / 6.0;
+    const double *f0 = rm->fine[k - 1], *f1 = rm->fine[k], *f2 = rm->fine[k + 1], *f3 = rm->fine[k + 2];
+    for (int j = 0; j < 4; j++) v[j] = w0 * f0[j] + w1 * f1[j] + w2 * f2[j] + w3 * f3[j];
+  }
+  set_coef(v, c);
 }
 
 int dc_rolling_material_init(const dc_mindlin_pair *m, dc_rolling_material *rm, dc_param_error *err)
@@ -285,12 +318,16 @@ int dc_rolling_material_init(const dc_mindlin_pair *m, dc_rolling_material *rm, 
     return DC_EDOM;
   }
   dc_rolling_material r;
+  double lnc[4][DC_KALKER_NODES], t[4];
   r.G = G;
   r.nu = nu;
-  build_series(nu, r.lnc);
-  table_edges(r.lnc, nu, r.edge_lo, r.edge_hi);
-  double t[4];
-  series_lnc(r.lnc, 0.0, t);
+  build_series(nu, lnc);
+  table_edges(lnc, nu, r.edge_lo, r.edge_hi);
+  for (int k = 0; k < DC_KALKER_FINE; k++) {
+    series_lnc(lnc, (double)k / (0.5 * (DC_KALKER_FINE - 1)) - 1.0, t);
+    for (int j = 0; j < 4; j++) r.fine[k][j] = exp(t[j]);
+  }
+  series_lnc(lnc, 0.0, t);
   for (int j = 0; j < 4; j++) r.circle[j] = exp(t[j]);
   *rm = r;
   return DC_OK;
@@ -306,7 +343,7 @@ int dc_kalker_coefficients(const dc_rolling_material *rm, double g, dc_kalker_co
     c->c33 = rm->circle[3];
     return DC_OK;
   }
-  coefficients(rm->lnc, rm->edge_lo, rm->edge_hi, rm->nu, g, c);
+  coefficients_fine(rm, g, c);
   return DC_OK;
 }
 
@@ -317,7 +354,7 @@ int dc_kalker_coefficients_nu(double g, double nu, dc_kalker_coef *c)
   double lnc[4][DC_KALKER_NODES], lo[4], hi[5];
   build_series(nu, lnc);
   table_edges(lnc, nu, lo, hi);
-  coefficients(lnc, lo, hi, nu, g, c);
+  coefficients_series(lnc, lo, hi, nu, g, c);
   return DC_OK;
 }
 
@@ -474,7 +511,7 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
     if (ca > 1.0) ca = 1.0;
     const double sa = sqrt((1.0 - ca) * (1.0 + ca)), r = b / a;
     const double h_along = hypot(ca, r * sa), h_across = hypot(sa, r * ca);
-    coefficients(rm->lnc, rm->edge_lo, rm->edge_hi, rm->nu, h_along / h_across, &c);
+    coefficients_fine(rm, h_along / h_across, &c);
     if (sa > 0.0) c.c33 *= h_along * h_across / r;
   }
   /* Eqs. 86-88: F = -G c^2 (...), c = (a b)^1/2 */
@@ -484,7 +521,8 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   double Mz = Gc2 * cc * (c.c23 * xi_y - cc * c.c33 * phi);
   const double muF = p->mu * patch->F_bound;
   if (!isfinite(muF) || !isfinite(xi_x) || !isfinite(xi_y) || !isfinite(phi)) return DC_ERANGE;
-  double FL = hypot(Fx, Fy);
+  double FL = sqrt(Fx * Fx + Fy * Fy);
+  if (!(FL > 1e-150 && FL < 1e150)) FL = hypot(Fx, Fy);   /* squares under- or overflow */
   double ux = 0.0, uy = 0.0;   /* direction of the linear force */
   if (!isfinite(FL)) {
     /* the same direction from creepages scaled to order one */
@@ -549,7 +587,9 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   out->phi = phi;
   out->c = c;
   {
-    const double sat = muF > 0.0 ? hypot(Fx, Fy) / muF : 0.0;
+    double h = sqrt(Fx * Fx + Fy * Fy);
+    if (!(h > 1e-150 && h < 1e150)) h = hypot(Fx, Fy);
+    const double sat = muF > 0.0 ? h / muF : 0.0;
     out->saturation = sat > 1.0 ? 1.0 : sat;
   }
   out->rolling = 1;

@@ -58,7 +58,7 @@ static void test_table(void)
   char tag[16];
   double v[10];
   int nodes = 0, checks = 0;
-  double worst_node[4] = {0}, worst_check[4] = {0}, worst_gen[4] = {0};
+  double worst_node[4] = {0}, worst_check[4] = {0}, worst_gen[4] = {0}, worst_fine = 0.0;
   while (check_read_tagged_row(f, tag, sizeof tag, v, 10) == 10) {
     if (strcmp(tag, "node") && strcmp(tag, "check")) continue;
     const double g = v[0], nu = v[1];
@@ -87,7 +87,10 @@ static void test_table(void)
       CHECK_REL(rm.G, 2.0, 1e-15, "combined G");
       dc_kalker_coef d;
       CHECK(dc_kalker_coefficients(&rm, g, &d) == DC_OK);
-      for (int j = 0; j < 4; j++) CHECK_REL(coef_j(&d, j), coef_j(&c, j), 1e-13, "material series = nu series");
+      for (int j = 0; j < 4; j++) {
+        CHECK_REL(coef_j(&d, j), coef_j(&c, j), 1e-6, "material table = nu series");
+        worst_fine = fmax(worst_fine, fabs(coef_j(&d, j) / coef_j(&c, j) - 1.0));
+      }
     }
     if (node) nodes++;
     else checks++;
@@ -98,6 +101,7 @@ static void test_table(void)
   printf("coefficients vs gen_kalker.py, max relative difference (grid rows | held-out rows | generator's own error estimate):\n");
   for (int j = 0; j < 4; j++)
     printf("  %s: %.1e | %.1e | %.1e\n", cname[j], worst_node[j], worst_check[j], worst_gen[j]);
+  printf("  a material's uniform table against the series: %.1e\n", worst_fine);
 }
 
 /* ------------------------------------------------------------------ */

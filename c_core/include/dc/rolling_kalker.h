@@ -69,8 +69,9 @@
    expansion on the ellipse, least leading-edge traction, extrapolated in
    the degree; see there) on 17 Chebyshev-Lobatto points of ln g in
    [ln 0.1, ln 10] and 9 Chebyshev points of nu; the law evaluates the
-   Chebyshev series of ln c_ij (in nu once per material pair, in ln g per
-   call). Outside [0.1, 10]: Kalker's asymptotes (1990, as for the
+   Chebyshev series of ln c_ij, in nu and then on 129 uniform points of
+   ln g once per material pair; per call a 4-point Lagrange interpolation
+   in ln g (within 5e-7 of the series). Outside [0.1, 10]: Kalker's asymptotes (1990, as for the
    published table), scaled to meet the table at its edge: for g < 0.1 the
    scale tends to 1 as g (c11, c22, c33) and g^1/2 (c23), for g > 10 as
    Lambda^-2, Lambda = ln(16 g^2) (the order of the asymptotes' remainder).
@@ -122,6 +123,8 @@ enum { DC_ROLLING_KALKER = 0, DC_ROLLING_VJ = 1 };
 
 /* Chebyshev-Lobatto nodes of ln(a_x/b_y) in [-ln 10, ln 10]. */
 #define DC_KALKER_NODES 17
+/* Uniform points of ln(a_x/b_y) in [-ln 10, ln 10] of a material's table. */
+#define DC_KALKER_FINE 129
 
 /* Per type pair. */
 typedef struct {
@@ -139,7 +142,7 @@ int dc_rolling_check(const dc_rolling_params *p, dc_param_error *err);
 typedef struct {
   double G;                         /* 2 / s0 [Pa] */
   double nu;                        /* s1 / s0, in [0, 0.5] */
-  double lnc[4][DC_KALKER_NODES];   /* Chebyshev series in ln(g)/ln 10 of ln c11, ln c22, ln c23, ln c33 */
+  double fine[DC_KALKER_FINE][4];   /* c11, c22, c23, c33 at ln g = ln 10 (k/64 - 1), from the series */
   double circle[4];                 /* c11, c22, c23, c33 at g = 1 */
   double edge_lo[4], edge_hi[5];    /* table / asymptote at g = 0.1 and g = 10 (c33: value, power) */
 } dc_rolling_material;
