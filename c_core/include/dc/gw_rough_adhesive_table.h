@@ -1,0 +1,140 @@
+/* Rough contact with adhesive (JKR) summits, tabulated: the adhesive part
+   of dc/gw_rough_adhesive.h (review Eq. 29, Fuller-Tabor construction) for
+   circular summits at DEM cost, to be added to the elastic GW force.
+
+   Reduced variables. For circular summits of radius R the summit law is
+   f(u) = F_s fbar(u/delta_c) with fbar a pure function (classical JKR:
+   fbar = 4/(3 pi) A^3 - A^3/2, u/delta_c = 2 A^2 - pi A^1/2, A = a/a_s),
+     F_s = 8 w R,  a_s = (8 w R^2/(pi E*))^1/3,  delta_c = a_s^2/(2R),
+   so with u = delta + sigma s = sigma (s - h) the adhesive part
+     F_adh = F - F_gw = n_asp F_s G_b(h, tau),
+     G_b(h, tau) = int_{s0}^oo [fbar - fbar_Hertz](tau (s - h)) phi(s) ds
+                   (+ the pulling summits below touch, fbar alone)
+   depends only on h = -delta/sigma, tau = sigma/delta_c (the summits'
+   adhesion parameter: theta = E* sigma^3/2/(w R^1/2) = (2 sqrt2/pi)
+   tau^3/2, the Fuller-Tabor parameter without their factor) and the
+   branch b (loading / unloading). E*, w, R, sigma, n_asp enter only through
+   F_s, delta_c and tau. F_gw is the closed form of dc_gw_rough_elliptic
+   (review Eqs. 31-36) for the same n_asp and sigma. For elliptic summits
+   the summit law also depends on R_minor/R_major (the elliptic factor):
+   not tabulated here (use dc_gw_rough_adhesive).
+   G < 0 everywhere (every attached summit pulls more than its Hertz
+   counterpart; checked at every node by the generator). Deep in
+   compression G -> -pi/8 (f_JKR - f_Hertz -> -pi w R), with a u^-3/4 tail.
+
+   Table (c_core/src/gw_rough_adhesive_table_data.h, written by
+   tests/reference/gen_gw_rough_adhesive_table.c from the c_core law):
+   L = ln(-G) at nodes in x and eta = ln tau, with dL/dx, dL/d eta and
+   d2L/dx d eta; bicubic Hermite in (cell coordinate of x, eta), so L, and
+   the force, is C1 in delta and in tau. x = h (loading) or x = h - D
+   (unloading; D = -delta_break/sigma, x is then the height s0 of the
+   lowest attached summit). x nodes: 1/8 on [-8, 8]; below -8, 4 per octave
+   in log2(-x) to -256. eta nodes: 1/2 on [-4.5, 8] (theta 1.1e-3 to
+   1.5e5; above, the law's F - F_gw loses digits to the elastic part).
+   Beyond the table:
+   - x > 8: L continued linearly (C1; G < 1e-15 there);
+   - x < -256 (every summit pressed, the Gaussian 1/|x| of the mean
+     compression d = delta/delta_c): G = g(d) + (G_end - g(d_end))
+     (x_end/x)^11/4, g = fbar - fbar_Hertz of one summit (exact, from the
+     JKR contact radius; the correction is the tau^2 g''/2 term's decay),
+     matched in value at x_end = -256 (the slope to ~1e-5);
+   - eta outside its range is clamped (theta > 1.5e5: the adhesive part is
+     below ~1e-5 of the elastic one; theta < 1.1e-3: not covered, the
+     error is not stated there).
+
+   History (dc_gwa_table_history): gwa_touched (0 / 1) and gwa_delta_max
+   (the largest overlap reached [m]). Loading branch while delta >= the
+   largest overlap; the unloading branch once delta <= delta_max +
+   delta_break (every summit that ever touched and is above the separation
+   point is attached: the exact count of dc/gw_rough_adhesive.h); between
+   the two a C1 blend (3 xi^2 - 2 xi^3, xi = (delta_max - delta)/
+   |delta_break|) stands for the partly attached band (the true force lies
+   between the branches). The history resets (next step loads afresh) when
+   the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R).
+   Work of adhesion 0: force and stiffness exactly 0. */
+#ifndef DC_GW_ROUGH_ADHESIVE_TABLE_H
+#define DC_GW_ROUGH_ADHESIVE_TABLE_H
+
+#include <math.h>
+#include "dc/contract.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define DC_GWA_TABLE_X_LO (-8.0)
+#define DC_GWA_TABLE_X_HI 8.0
+#define DC_GWA_TABLE_X_PER_UNIT 16
+#define DC_GWA_TABLE_NNEAR 256          /* cells on [X_LO, X_HI] */
+#define DC_GWA_TABLE_PER_OCTAVE 8
+#define DC_GWA_TABLE_OCTAVES 5
+#define DC_GWA_TABLE_NDEEP (DC_GWA_TABLE_PER_OCTAVE * DC_GWA_TABLE_OCTAVES)
+#define DC_GWA_TABLE_NX (DC_GWA_TABLE_NDEEP + DC_GWA_TABLE_NNEAR + 1)
+#define DC_GWA_TABLE_ETA_LO (-4.5)
+#define DC_GWA_TABLE_ETA_PER_UNIT 4
+#define DC_GWA_TABLE_NETA 51            /* eta_hi = 8 */
+
+/* x at node i in [0, DC_GWA_TABLE_NX) (increasing) */
+static inline double dc_gwa_table_x_node(int i)
+{
+  if (i < DC_GWA_TABLE_NDEEP)
+    return DC_GWA_TABLE_X_LO * exp2((double)(DC_GWA_TABLE_NDEEP - i) / DC_GWA_TABLE_PER_OCTAVE);
+  return DC_GWA_TABLE_X_LO + (double)(i - DC_GWA_TABLE_NDEEP) / DC_GWA_TABLE_X_PER_UNIT;
+}
+
+/* One material (type) pair: E*, w, sigma, n_asp of dc_gw_rough_adhesive. */
+typedef struct {
+  double Estar, w, sigma, n_asp;
+  double inv_sigma;
+  double ln_sigma_dc;  /* ln(sigma / delta_c(R = 1 m)); eta = this - ln(R)/3 */
+  double dc_coef;      /* delta_c = dc_coef R^1/3 */
+  double F_coef;       /* n_asp F_s / R = 8 w n_asp */
+  double ub;           /* delta_break / delta_c of the circular summit (< 0) */
+} dc_gwa_table_pair;
+
+/* Parameter check (dc/contract.h): workOfAdhesion w >= 0, roughness
+   sigma > 0, asperityCount n_asp > 0, Estar > 0, all finite. */
+int dc_gwa_table_check(double Estar, double w, double sigma, double n_asp, dc_param_error *err);
+
+/* Set-up per material pair (the parameters of dc_gw_rough_adhesive, with
+   circular summits): DC_EDOM outside the domain of dc_gwa_table_check,
+   *p untouched. */
+int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, dc_gwa_table_pair *p);
+
+/* G_b and dG/dx in the reduced variables (branch DC_GW_LOADING /
+   DC_GW_UNLOADING of dc/gw_rough_adhesive.h; x as above; eta = ln tau).
+   DC_EDOM for non-finite x, eta or another branch (outputs untouched). */
+int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx);
+
+/* Adhesive force part (< 0) and its d/d delta on one branch, for relative
+   radius R > 0 at overlap delta (finite, any sign). F + the smooth-GW
+   force of dc_gw_rough_elliptic = dc_gw_rough_adhesive's force. DC_EDOM
+   for non-finite input or R <= 0; DC_ERANGE if a result overflows
+   (outputs untouched on error). */
+int dc_gwa_table_force(const dc_gwa_table_pair *p, double R, int branch, double delta,
+                       double *F, double *kn);
+
+/* Per-contact history: gwa_touched, gwa_delta_max (no sign flips). */
+enum { DC_GWA_TABLE_HISTORY_NFIELDS = 2 };
+extern const dc_history_field dc_gwa_table_history[DC_GWA_TABLE_HISTORY_NFIELDS];
+
+typedef struct {
+  double F;        /* adhesive part of the normal force [N] (<= 0) */
+  double kn;       /* dF/d delta [N/m] */
+  double weight;   /* 0 loading branch, 1 unloading branch, between: blend */
+} dc_gwa_table_out;
+
+/* One DEM step: the adhesive force at overlap delta with the branch from
+   hist (updated). w = 0: F = kn = 0 exactly, hist untouched. Errors as
+   dc_gwa_table_force, hist and *o untouched. */
+int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist,
+                      dc_gwa_table_out *o);
+
+/* Reach: the separation (-delta) beyond which the force is below
+   1e-15 n_asp w R on either branch: (D + 8) sigma. */
+double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
