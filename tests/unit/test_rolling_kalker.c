@@ -1,11 +1,15 @@
 /* Kalker's linear creep theory and Vermeulen-Johnson (dc/rolling_kalker.h):
    the creep coefficients against the generator's table
-   (tests/reference/gen_kalker.py, kalker.csv: grid points and held-out
-   points) and the published values (kalker_published.csv); limits (circle,
+   (tests/reference/gen_kalker.py, kalker.csv: grid points, held-out points
+   and points beyond the grid) and Kalker's published values
+   (kalker_published.csv); rolling at an angle to the patch's axes against
+   the expansion for a turned ellipse (kalker_oblique.csv); limits (circle,
    nu = 0, the strip asymptotes, continuity at the table's edges); the
-   kinematics of rolling; the linear forces, spin, Vermeulen-Johnson against
-   Kalker at small creepage, against Eqs. 92-93 and saturating at mu F;
-   zero rolling speed; a random sweep of edge inputs (status contract). */
+   kinematics of rolling; the linear forces (Eqs. 86-88), spin,
+   Vermeulen-Johnson against Kalker at small creepage, against Eqs. 92-93
+   and saturating at mu F; i and j swapped; zero rolling speed; a random
+   sweep of edge inputs (status contract); parameter checks. Prints the
+   differences it measures. */
 #include "check.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/rolling_kalker.h"

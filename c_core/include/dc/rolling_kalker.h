@@ -16,8 +16,9 @@
    (rollingVelocityMin) the law does not act: dc_rolling_force returns
    DC_OK with zero force and moment and out->rolling = 0, and the
    tangential law of the contact (history based, e.g. cmd_tangential) is
-   the one that acts; with rolling = 1 the creep force replaces it. No
-   division by V happens below v_min, so V -> 0 gives no overflow.
+   the one that acts; with rolling = 1 a wrapper applies the creep force
+   in its place. No division by V happens below v_min, so V -> 0 gives no
+   overflow.
 
    Kinematics (review Eqs. 89-91, derived; dc_rolling_kinematics). n is
    the unit normal from j to i; dv = w_i - w_j the difference of the
@@ -71,7 +72,11 @@
    [ln 0.1, ln 10] and 9 Chebyshev points of nu; the law evaluates the
    Chebyshev series of ln c_ij, in nu and then on 129 uniform points of
    ln g once per material pair; per call a 4-point Lagrange interpolation
-   in ln g (within 5e-7 of the series). Outside [0.1, 10]: Kalker's asymptotes (1990, as for the
+   in ln g (within 5e-7 of the series). Kalker's published values (1990,
+   Table E.3: c11, c22, c23 to 3 digits for g = 0.1..10, nu = 0, 0.25,
+   0.5) lie within 1.2 % of these, within 0.8 % for g in [0.2, 5], and
+   below them in 111 of 171 entries (his expansion was of lower degree).
+   Outside [0.1, 10]: Kalker's asymptotes (1990, as for the
    published table), scaled to meet the table at its edge: for g < 0.1 the
    scale tends to 1 as g (c11, c22, c33) and g^1/2 (c23), for g > 10 as
    Lambda^-2, Lambda = ln(16 g^2) (the order of the asymptotes' remainder).
