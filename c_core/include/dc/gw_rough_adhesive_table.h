@@ -28,8 +28,8 @@
    d2L/dx d eta; bicubic Hermite in (cell coordinate of x, eta), so L, and
    the force, is C1 in delta and in tau. x = h (loading) or x = h - D
    (unloading; D = -delta_break/sigma, x is then the height s0 of the
-   lowest attached summit). x nodes: 1/8 on [-8, 8]; below -8, 4 per octave
-   in log2(-x) to -256. eta nodes: 1/2 on [-4.5, 8] (theta 1.1e-3 to
+   lowest attached summit). x nodes: 1/16 on [-8, 8]; below -8, 8 per octave
+   in log2(-x) to -256. eta nodes: 1/4 on [-4.5, 8] (theta 1.1e-3 to
    1.5e5; above, the law's F - F_gw loses digits to the elastic part).
    Beyond the table:
    - x > 8: L continued linearly (C1; G < 1e-15 there);
@@ -51,7 +51,13 @@
    |delta_break|) stands for the partly attached band (the true force lies
    between the branches). The history resets (next step loads afresh) when
    the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R).
-   Work of adhesion 0: force and stiffness exactly 0. */
+   Work of adhesion 0: force and stiffness exactly 0.
+   Error against the exact law (tests/unit/test_gw_rough_adhesive_table.c,
+   1500 random points off the nodes, theta in the table's range): relative,
+   where |F| >= 1e-6 n_asp 8 w R, loading 1.5e-6 (kn 3.6e-7), unloading
+   3.8e-4 (kn 6.7e-4; worst at small tau, x in -26..-6, not yet traced);
+   absolute below 1.9e-12 n_asp 8 w R. Pull-off force within 4.7e-6.
+   Cost: 73-80 ns per dc_gwa_table_step (exact law ~9.5 us). */
 #ifndef DC_GW_ROUGH_ADHESIVE_TABLE_H
 #define DC_GW_ROUGH_ADHESIVE_TABLE_H
 
