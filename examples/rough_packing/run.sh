@@ -4,6 +4,8 @@
 # estimated as (total sphere volume) / (pi R_cyl^2 * 2 * centre-of-mass height)
 # (a uniform bed of height H has its centre of mass at H/2), and its change
 # from the smooth case. Feng et al. report a near-linear decrease, 2% at 0.01.
+# Each run's dumps are converted for ParaView (tools/dump2vtk.py):
+# OUTDIR/sigma_r_<s>/paraview/particles.pvd and contacts.pvd.
 # Usage: bash examples/rough_packing/run.sh [OUTDIR]  (needs plugin/setup.sh first)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -14,6 +16,7 @@ for s in 0.0 0.001 0.005 0.01; do
   echo "rough_packing: sigma_r = $s (a few minutes)"
   mpirun -np 2 "$root/build/bin/liggghts" -in "$root/examples/rough_packing/in.rough_packing" \
          -var sigma_r "$s" -log log.liggghts > screen.txt
+  python3 "$root/tools/dump2vtk.py" 'post/dump*.rough' 'post/contacts*.local' --log log.liggghts -o paraview
 done
 python3 - "$out" <<'PY'
 import math, os, sys
