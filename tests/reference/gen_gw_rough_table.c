@@ -100,20 +100,39 @@ static int write_table(int nthreads)
   return 0;
 }
 
-/* Error map in the layout of tests/reference/gw_feng_error_map.txt. */
+/* P* of the map's reference solver: domain 2 x Eq. 60 (the generator's), m = 300
+   (alpha' <= 64) or 800, i.e. other points than the generator's */
+static double map_solve(const dc_gw_solver *S, const dc_gw_solver *S2, double ap, double mu)
+{
+  dc_gw_solve_opts o = dc_gw_solve_default_opts();
+  o.domain_scale = 2.0;
+  dc_gw_solve_result r;
+  if (dc_gw_solve(ap <= 64.0 ? S : S2, ap, mu, &o, &r) != DC_OK) return NAN;
+  return r.Pstar_sigma;
+}
+
+/* Error map in the layout of tests/reference/gw_feng_error_map.txt, then
+   the worst error at every cell midpoint of the table. */
 static int error_map(void)
 {
   const double mus[] = {1, 2, 4, 7, 10, 20, 35, 50};
   enum { NMAP = 8 };
-  dc_gw_solver S;
-  if (dc_gw_solver_init(&S, 300) != DC_OK) return 1;
-  printf("\nError map of the tabulated GW law (dc/gw_rough_table.h) against the full solver (m = 300,\n"
-         "domain 1.5 x Eq. 60, exact F_3/2, force integrated to infinity; the table was built with\n"
-         "m = 400..1000, domain 2). Cell: (law - solver)/solver in %%, law tabulated | Feng (table\n"
-         "variant). Rows: Case I in alpha = sigma/delta, Cases II-III in alpha' = delta/sigma, as in\n"
-         "gw_feng_error_map.txt, plus the tail. '*' marks P*_solver < 1e-6 (there the table's\n"
-         "absolute error in P* is printed instead, in units of 1e-9). Made by\n"
-         "tests/reference/gen_gw_rough_table.c map.\n");
+  dc_gw_solver S, S2;
+  if (dc_gw_solver_init(&S, 300) != DC_OK || dc_gw_solver_init(&S2, 800) != DC_OK) return 1;
+  dc_gw_table_law T[NMAP];
+  dc_feng_law L[NMAP];
+  for (int j = 0; j < NMAP; j++)
+    if (dc_gw_table_init(mus[j], &T[j]) != DC_OK || dc_feng_init(mus[j], DC_FENG_TABLE, &L[j]) != DC_OK) return 1;
+  printf("\nError map of the tabulated GW law (dc/gw_rough_table.h) and of the Feng explicit law\n"
+         "against the full solver (m = 300, 800 beyond alpha' = 64; domain 2 x Eq. 60, exact F_3/2, force\n"
+         "integrated to infinity; the table was built from m = 400/600/1000). Made by\n"
+         "tests/reference/gen_gw_rough_table.c map.\n\n"
+         "1. The points of gw_feng_error_map.txt (plus the tail). Cell: (law - solver)/solver in %%,\n"
+         "tabulated | Feng (table variant). Rows: Case I in alpha = sigma/delta, Cases II-III in\n"
+         "alpha' = delta/sigma. Many of these points are nodes of the table (alpha' = k/16 below 1,\n"
+         "2^e (1 + j/8) above): there the first number is the solver against itself at other m.\n"
+         "'*' marks P*_solver < 1e-6; there the table's absolute error in P* is printed instead, in\n"
+         "units of 1e-9 (the Feng law is 0 below alpha' = -3: -100%%).\n");
   printf("%9s", "");
   for (int j = 0; j < NMAP; j++) printf(" %15s%-4g", "mu=", mus[j]);
   printf("\n");
@@ -128,25 +147,19 @@ static int error_map(void)
     else { ap = tail[row - 29]; cs = 2; }
     if (cs == 0) printf("alpha=%-4.2f", a); else printf("a'=%-7.2f", ap);
     for (int j = 0; j < NMAP; j++) {
-      dc_gw_solve_opts o = dc_gw_solve_default_opts();
-      o.domain_scale = 1.5;
-      dc_gw_solve_result r;
-      if (dc_gw_solve(&S, ap, mus[j], &o, &r) != DC_OK) return 1;
-      dc_gw_table_law T;
-      dc_feng_law L;
-      dc_gw_table_init(mus[j], &T);
-      dc_feng_init(mus[j], DC_FENG_TABLE, &L);
+      const double ref = map_solve(&S, &S2, ap, mus[j]);
+      if (!isfinite(ref)) return 1;
       double Pt, dPt;
-      dc_gw_table_pstar(&T, ap, &Pt, &dPt);
-      const double ef = 100 * (dc_feng_pstar_sigma(&L, ap) / r.Pstar_sigma - 1);
-      if (r.Pstar_sigma >= 1e-6) {
-        const double et = 100 * (Pt / r.Pstar_sigma - 1);
+      dc_gw_table_pstar(&T[j], ap, &Pt, &dPt);
+      const double ef = 100 * (dc_feng_pstar_sigma(&L[j], ap) / ref - 1);
+      if (ref >= 1e-6) {
+        const double et = 100 * (Pt / ref - 1);
         worst[0][cs] = fmax(worst[0][cs], fabs(et));
-        if (r.Pstar_sigma >= 0.02) worst[1][cs] = fmax(worst[1][cs], fabs(ef));
+        if (ref >= 0.02) worst[1][cs] = fmax(worst[1][cs], fabs(ef));
         printf(" %8.5f|%7.2f ", et, ef);
       } else {
-        worst_abs = fmax(worst_abs, fabs(Pt - r.Pstar_sigma));
-        printf(" %8.4f|%7.2f*", 1e9 * (Pt - r.Pstar_sigma), ef);
+        worst_abs = fmax(worst_abs, fabs(Pt - ref));
+        printf(" %8.4f|%7.2f*", 1e9 * (Pt - ref), ef);
       }
     }
     printf("\n");
@@ -155,7 +168,42 @@ static int error_map(void)
   printf("  tabulated, P*_solver >= 1e-6         %9.5f %9.5f %9.5f\n", worst[0][0], worst[0][1], worst[0][2]);
   printf("  Feng (table), P*_solver >= 0.02      %9.2f %9.2f %9.2f\n", worst[1][0], worst[1][1], worst[1][2]);
   printf("  tabulated, P*_solver < 1e-6: max |P*_law - P*_solver| = %.2e\n", worst_abs);
+
+  /* 2. every cell midpoint (off the nodes: the spline's largest error) */
+  printf("\n2. The tabulated law at every cell midpoint of the table, by range of alpha': max\n"
+         "|(law - solver)/solver| in %% where P*_solver >= 1e-6 (in brackets: the number of midpoints),\n"
+         "and max |P*_law - P*_solver| where below. Feng (table variant) alongside, where P* >= 0.02.\n");
+  const double band[5] = {-6.0, -3.0, 0.0, 1.0, DC_GW_TABLE_X_HI};
+  const char *bname[4] = {"alpha' in [-6, -3)", "alpha' in [-3, 0)", "alpha' in [0, 1)", "alpha' in [1, 4096)"};
+  double all = 0, all_abs = 0;
+  for (int b = 0; b < 4; b++) {
+    double wt = 0, wf = 0, wa = 0;
+    int n = 0, nt = 0, nf = 0, na = 0;
+    for (int i = 0; i < DC_GW_TABLE_NCELL; i++) {
+      const double x = 0.5 * (dc_gw_table_node(i) + dc_gw_table_node(i + 1));
+      if (!(x >= band[b] && x < band[b + 1])) continue;
+      n++;
+      for (int j = 0; j < NMAP; j++) {
+        const double ref = map_solve(&S, &S2, x, mus[j]);
+        if (!isfinite(ref)) return 1;
+        double Pt, dPt;
+        dc_gw_table_pstar(&T[j], x, &Pt, &dPt);
+        if (ref >= 1e-6) { wt = fmax(wt, fabs(Pt / ref - 1)); nt++; }
+        else { wa = fmax(wa, fabs(Pt - ref)); na++; }
+        if (ref >= 0.02) { wf = fmax(wf, fabs(dc_feng_pstar_sigma(&L[j], x) / ref - 1)); nf++; }
+      }
+    }
+    all = fmax(all, wt);
+    all_abs = fmax(all_abs, wa);
+    char ta[32] = "-", ts[32] = "-", tf[32] = "-";
+    if (nt) snprintf(ts, sizeof ts, "%.5f%%", 100 * wt);
+    if (na) snprintf(ta, sizeof ta, "%.1e", wa);
+    if (nf) snprintf(tf, sizeof tf, "%.2f%%", 100 * wf);
+    printf("  %-22s [%3d]  tabulated %9s  (abs. below 1e-6: %7s)   Feng %7s\n", bname[b], n, ts, ta, tf);
+  }
+  printf("  all cells: tabulated max rel. error %.2e (P* >= 1e-6), max abs. error %.2e (P* < 1e-6)\n", all, all_abs);
   dc_gw_solver_free(&S);
+  dc_gw_solver_free(&S2);
   return 0;
 }
 
