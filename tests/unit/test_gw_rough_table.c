@@ -62,7 +62,7 @@ static void report(const char *what, const worst_err *w)
 {
   printf("  %-34s %4d points:", what, w->n);
   if (w->rel_mu > 0) printf(" max rel.err %.2e (alpha' %.4g, mu %.4g)", w->rel, w->rel_ap, w->rel_mu);
-  if (w->abs > 0) printf(", max abs.err %.1e below 1e-6 (alpha' %.4g, mu %.4g)", w->abs, w->abs_ap, w->abs_mu);
+  if (w->abs > 0) printf("%s max abs.err %.1e below 1e-6 (alpha' %.4g, mu %.4g)", w->rel_mu > 0 ? "," : "", w->abs, w->abs_ap, w->abs_mu);
   printf("\n");
   CHECK(w->rel <= DC_GW_TABLE_REL_ERR);
   CHECK(w->abs <= DC_GW_TABLE_ABS_ERR);
