@@ -9,9 +9,21 @@
      tangential_damping on|off   damping on the tangential spring (default on)
      limitForce on|off           clip the total normal force at zero (default off;
                                  models with an adhesive force stop the run if on)
-     viscoelastic on|off         viscoelastic damping F_dis = A d(delta)/dt S
-                                 (property viscoelasticTime A [s]) instead of
-                                 restitution damping (coefficientRestitution)
+     damping LAW                 normal damping force -gamma d(delta)/dt (c_core
+                                 dc/damping.h), LAW one of
+                                   restitution (default): LIGGGHTS' damping for
+                                     coefficientRestitution on dF/d delta
+                                   viscoelastic: gamma = A dF/d delta (BSHP),
+                                     property viscoelasticTime A [s]
+                                   kuwabaraKono: gamma = eta delta^1/2, property
+                                     kuwabaraKonoDamping eta [N s m^-3/2]
+                                   tsuji: gamma = alpha (2/3 m dF/d delta)^1/2,
+                                     alpha from coefficientRestitution (the
+                                     lecture notes' fit, Norouzi et al.)
+                                   none
+                                 tangential_damping applies the same law with
+                                 the tangential stiffness in place of dF/d delta
+     viscoelastic on|off         the same as damping viscoelastic
      maxRadiusFactor X           superquadrics: cap on each relative principal
                                  radius, X times the volume-equivalent effective
                                  radius, X in (1, 1e12] (default 100)
@@ -53,8 +65,8 @@ public:
                 int unsupported = 0) :
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
-    tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
-    maxRadiusFactor(100.0), name_(name), unsupported_(unsupported)
+    kuwabaraKono(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
+    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), name_(name), unsupported_(unsupported)
   {}
 
   void registerSettings(Settings &settings)
@@ -62,6 +74,10 @@ public:
     settings.registerOnOff("tangential_damping", tangential_damping, true);
     settings.registerOnOff("limitForce", limitForce, false);
     settings.registerOnOff("viscoelastic", viscoelastic, false);
+    static const char *const names[] = {"restitution", "viscoelastic", "kuwabaraKono", "tsuji", "none"};
+    static const int laws[] = {DC_DAMPING_RESTITUTION, DC_DAMPING_VISCOELASTIC, DC_DAMPING_KUWABARA_KONO,
+                               DC_DAMPING_TSUJI, DC_DAMPING_NONE};
+    settings.registerChoice("damping", dampingLaw, names, laws, 5, "restitution");
     settings.registerOnOff("contactPatch", contactPatch, false);
     settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
   }
@@ -78,8 +94,8 @@ public:
     patch.setup(lmp, hsetup, c, contactPatch, name_);
   }
 
-  /* E*, G* and the damping property: coefficientRestitution, or
-     viscoelasticTime with `viscoelastic on`. */
+  /* E*, G* and the damping law's property, as a coefficient per type pair
+     (dc_damping_gamma's coef). */
   void connectToProperties(PropertyRegistry &registry)
   {
     const std::string caller = std::string("model ") + name_;
@@ -88,13 +104,41 @@ public:
     registry.connect("Yeff", Yeff, caller.c_str());
     registry.connect("Geff", Geff, caller.c_str());
     if (viscoelastic) {
-      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller.c_str());
-      registry.connect("viscoelasticTime", viscoelasticTime, caller.c_str());
-    } else {
-      registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller.c_str());
-      registry.connect("betaeff", betaeff, caller.c_str());
+      if (dampingLaw != DC_DAMPING_RESTITUTION && dampingLaw != DC_DAMPING_VISCOELASTIC)
+        stop(true, "'viscoelastic on' and another damping law: give one 'damping LAW'");
+      dampingLaw = DC_DAMPING_VISCOELASTIC;
     }
     const int n = registry.max_type();
+    dampCoef.assign((n + 1) * (n + 1), 0.0);
+    double **coef = NULL;
+    if (dampingLaw == DC_DAMPING_VISCOELASTIC) {
+      registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller.c_str());
+      registry.connect("viscoelasticTime", viscoelasticTime, caller.c_str());
+      coef = viscoelasticTime;
+    } else if (dampingLaw == DC_DAMPING_KUWABARA_KONO) {
+      registry.registerProperty("kuwabaraKonoDamping", &createKuwabaraKono, caller.c_str());
+      registry.connect("kuwabaraKonoDamping", kuwabaraKono, caller.c_str());
+      coef = kuwabaraKono;
+    } else if (dampingLaw == DC_DAMPING_RESTITUTION) {
+      registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller.c_str());
+      registry.connect("betaeff", betaeff, caller.c_str());
+      coef = betaeff;
+    } else if (dampingLaw == DC_DAMPING_TSUJI) {
+      registry.registerProperty("coefficientRestitution", &MODEL_PARAMS::createCoeffRest, caller.c_str());
+      double **e = registry.getMatrixProperty("coefficientRestitution", caller.c_str())->data;
+      for (int i = 1; i <= n; i++)
+        for (int j = 1; j <= n; j++)
+          if (dc_damping_tsuji_alpha(e[i][j], &dampCoef[i * (n + 1) + j]) != DC_OK) {
+            char msg[160];
+            snprintf(msg, sizeof msg, "coefficientRestitution = %g for types %d and %d is outside (0, 1] (damping tsuji)",
+                     e[i][j], i, j);
+            stop(true, msg);
+          }
+    }
+    if (coef)
+      for (int i = 1; i <= n; i++)
+        for (int j = 1; j <= n; j++) dampCoef[i * (n + 1) + j] = coef[i][j];
+    ntypes_ = n;
     for (int i = 1; i <= n; i++)
       for (int j = 1; j <= n; j++)
         if (!(Yeff[i][j] > 0.0 && Yeff[i][j] <= DBL_MAX && Geff[i][j] > 0.0 && Geff[i][j] <= DBL_MAX)) {
@@ -190,22 +234,22 @@ protected:
     }
   }
 
-  /* Elastic force P with damping on the stiffness Sn (normal; restitution
-     damping takes none where Sn <= 0) and kt (tangential), clipped at 0
-     with limitForce; stored in sidata with the secant kn and kt, applied. */
-  void applyForce(SurfacesIntersectData &sidata, double P, double vn, double Sn, double kn, double kt,
+  /* Elastic force P at overlap delta with damping (the damping setting) on
+     the stiffness Sn (normal; none where Sn <= 0 or delta <= 0 for the laws
+     that need them) and kt (tangential), clipped at 0 with limitForce;
+     stored in sidata with the secant kn and kt, applied. */
+  void applyForce(SurfacesIntersectData &sidata, double P, double delta, double vn, double Sn, double kn, double kt,
                   ForceData &i_forces, ForceData &j_forces)
   {
-    const int i = sidata.itype, j = sidata.jtype;
+    const double coef = dampCoef[sidata.itype * (ntypes_ + 1) + sidata.jtype];
+    const double d = delta > 0.0 ? delta : 0.0;
     double gamman, gammat = 0.0;
-    if (viscoelastic) {
-      const double A = viscoelasticTime[i][j];
-      gamman = dc_damping_viscoelastic(A, Sn);
-      if (tangential_damping) gammat = dc_damping_viscoelastic(A, kt);
+    if (dampingLaw == DC_DAMPING_VISCOELASTIC) {   /* acts on a negative stiffness too */
+      gamman = dc_damping_viscoelastic(coef, Sn);
+      if (tangential_damping) gammat = dc_damping_viscoelastic(coef, kt);
     } else {
-      const double beta = betaeff[i][j];
-      gamman = dc_damping_restitution(beta, Sn > 0.0 ? Sn : 0.0, sidata.meff);
-      if (tangential_damping) gammat = dc_damping_restitution(beta, kt, sidata.meff);
+      gamman = dc_damping_gamma(dampingLaw, coef, Sn > 0.0 ? Sn : 0.0, d, sidata.meff);
+      if (tangential_damping) gammat = dc_damping_gamma(dampingLaw, coef, kt, d, sidata.meff);
     }
     const double nktv2p = force->nktv2p;
     double Fn = -gamman * vn + P / nktv2p;
@@ -270,8 +314,11 @@ protected:
   /* The major-axis direction is worth computing only for a stored patch. */
   double *axisWanted(double *axis) const { return patch.active() ? axis : NULL; }
 
-  double **Yeff, **Geff, **betaeff, **viscoelasticTime;
+  double **Yeff, **Geff, **betaeff, **viscoelasticTime, **kuwabaraKono;
   bool tangential_damping, limitForce, viscoelastic, contactPatch;
+  int dampingLaw;                  /* dc_damping_law */
+  std::vector<double> dampCoef;    /* its coefficient per type pair */
+  int ntypes_;
   double maxRadiusFactor;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
@@ -281,6 +328,10 @@ private:
   static VectorProperty *createHardness(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypeProperty(registry, "hardness", caller, sanity_checks, 0.0, HUGE_VAL);
+  }
+  static MatrixProperty *createKuwabaraKono(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+  {
+    return MODEL_PARAMS::createPerTypePairProperty(registry, "kuwabaraKonoDamping", caller, sanity_checks, 0.0);
   }
   static MatrixProperty *createViscoelasticTime(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {

@@ -201,7 +201,7 @@ private:
       kn = delta > 0.0 ? P / delta : 0.0;
       if (delta > 0.0) kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(g.R_area * delta));
     }
-    applyForce(sidata, P, vn, Sn, kn, kt, i_forces, j_forces);
+    applyForce(sidata, P, delta, vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) {
       if (!sq && !(gwElliptic && sigma != 0.0)) hertzGeometry(reff, reff, g);  /* spheres: only R_force, R_area were set */
       dc_contact c;

@@ -55,7 +55,7 @@ public:
     const double root = dc_hertz_stiffness(Yeff[itype][jtype], r_force, deltan, &kn, &Sn);
     const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], r_area == r_force ? root : sqrt(r_area * deltan));
     const double P = kn * deltan;
-    applyForce(sidata, P, sidata.vn, Sn, kn, kt, i_forces, j_forces);
+    applyForce(sidata, P, deltan, sidata.vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) {
       if (!sq) hertzGeometry(r_force, r_force, g);
       dc_contact c;

@@ -84,7 +84,7 @@ public:
       /* a sphere contact below first yield with no plastic memory: hertz_elliptic's arithmetic */
       double kn, Sn;
       const double root = dc_hertz_stiffness(Y, R_major, sidata.deltan, &kn, &Sn);
-      applyForce(sidata, kn * sidata.deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root),
+      applyForce(sidata, kn * sidata.deltan, sidata.deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root),
                  i_forces, j_forces);
       if (ax) {
         dc_hertz_geom g;
@@ -114,7 +114,7 @@ public:
     const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(c.a * c.b));
     /* damping on the tangent stiffness; the secant stiffness for LIGGGHTS' time-step checks */
     const double kn = sidata.deltan > 0.0 ? c.F / sidata.deltan : 0.0;
-    applyForce(sidata, c.F, sidata.vn, c.kn, kn, kt, i_forces, j_forces);
+    applyForce(sidata, c.F, sidata.deltan, sidata.vn, c.kn, kn, kt, i_forces, j_forces);
     if (ax) publish(sidata, c, ax);
   }
 

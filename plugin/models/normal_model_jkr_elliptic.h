@@ -188,7 +188,7 @@ private:
       kn = Sn;
       if (ax) dc_jkr_normal(&s, F_pull, &c);
     }
-    applyForce(sidata, P, vn, Sn, kn, kt, i_forces, j_forces);
+    applyForce(sidata, P, delta, vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) publish(sidata, c, ax);
     return true;
   }
