@@ -1,5 +1,9 @@
-/* The status contract of dc/status.h for every public c_core function, by a
-   seeded fuzz: random and extreme arguments (log-uniform magnitudes over
+/* The status contract of dc/status.h for the public c_core functions, by a
+   seeded fuzz (every function of the headers included below; the newer
+   headers classical_normal.h, classical_tangential.h, gw_rough_plastic.h,
+   gw_rough_table.h, gw_rough_adhesive_table.h and rolling_kalker.h are not
+   covered here yet: their own unit tests run random and edge-input sweeps
+   against the same promises): random and extreme arguments (log-uniform magnitudes over
    1e-320 .. 1e308 of either sign, 0, -0, subnormals, DBL_MAX, +-inf, NaN,
    values at and a few ulps around the domain edges) mixed with typical
    values inside each domain (each call draws how many of its arguments are
