@@ -1,19 +1,21 @@
 /* dclaw gw_rough: GW rough normal force of two bodies versus overlap, CSV:
    the elliptic closed form (review Eqs. 29-36, on the hertz_elliptic
    geometry) and, for the sphere-equivalent radius, the Feng et al. explicit
-   law (Feng Eq. 75) in its table and fitted variants; with --w > 0 also the
+   law (Feng Eq. 75) in its table and fitted variants and the law tabulated
+   from the full GW solver (dc/gw_rough_table.h); with --w > 0 also the
    GW force with adhesive JKR summits on loading and unloading
    (dc/gw_rough_adhesive.h). */
 #include "cli.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive.h"
+#include "dc/gw_rough_table.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
 #include <math.h>
 #include <stdio.h>
 
-#define COLUMNS "delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted"
+#define COLUMNS "delta,h,force_gw_elliptic,area_gw_elliptic,kn_gw_elliptic,force_feng_table,kn_feng_table,force_feng_fitted,kn_feng_fitted,force_gw_table,kn_gw_table"
 
 /* Runs the subcommand; argv[0] is the law name. */
 static int cmd_gw_rough(int argc, char **argv)
@@ -40,7 +42,9 @@ static int cmd_gw_rough(int argc, char **argv)
     return 2;
   }
   dc_feng_law Lt, Lf;
-  if (dc_feng_init(dc_cli_get(o, "mu"), DC_FENG_TABLE, &Lt) || dc_feng_init(dc_cli_get(o, "mu"), DC_FENG_FITTED, &Lf)) {
+  dc_gw_table_law Lg;
+  if (dc_feng_init(dc_cli_get(o, "mu"), DC_FENG_TABLE, &Lt) || dc_feng_init(dc_cli_get(o, "mu"), DC_FENG_FITTED, &Lf) ||
+      dc_gw_table_init(dc_cli_get(o, "mu"), &Lg)) {
     fprintf(stderr, "dclaw gw_rough: --mu must lie in [%g, %g]\n", DC_FENG_MU_MIN, DC_FENG_MU_MAX);
     return 2;
   }
@@ -62,17 +66,17 @@ static int cmd_gw_rough(int argc, char **argv)
     const double d = dc_cli_range(d0, d1, i, n);
     dc_gw_rough_state rs;
     dc_gw_adhesive_state al = {0}, au = {0};
-    double pt, kt, pf, kf;
+    double pt, kt, pf, kf, pg, kg;
     if ((st = dc_gw_rough_elliptic(&g, E, N, s, d, &rs)) || (st = dc_feng_force(&Lt, E, R, s, d, &pt, &kt)) ||
-        (st = dc_feng_force(&Lf, E, R, s, d, &pf, &kf)) ||
+        (st = dc_feng_force(&Lf, E, R, s, d, &pf, &kf)) || (st = dc_gw_table_force(&Lg, E, R, s, d, &pg, &kg)) ||
         (w > 0 && ((st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_LOADING, &al)) ||
                    (st = dc_gw_rough_adhesive(&jg, N, s, d, DC_GW_UNLOADING, &au))))) {
       fprintf(stderr, "dclaw gw_rough: --Estar, --sigma, --n_asp, --delta_min, --delta_max%s: %s at delta %g (need Estar > 0, sigma >= 0, n_asp > 0)\n",
               w > 0 ? ", --w" : "", dc_status_str(st), d);
       return 2;
     }
-    const double v[] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, al.F, al.area, au.F, au.area};
-    if (dc_cli_row("gw_rough", o, cols, w > 0 ? 13 : 9, v)) return 2;
+    const double v[] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, pg, kg, al.F, al.area, au.F, au.area};
+    if (dc_cli_row("gw_rough", o, cols, w > 0 ? 15 : 11, v)) return 2;
   }
   return 0;
 }

@@ -6,7 +6,11 @@
          fix ID all wall/gran model gw_rough tangential history [surface superquadric] primitive ... [settings]
          neigh_modify contact_distance_factor F   (see below)
    Settings: those of every project normal model (dc_model_base.h), and
-     gwElliptic on|off   off: Feng explicit law (default, spheres only); on:
+     roughSphereLaw feng|table   the rough-sphere law (gwElliptic off): feng,
+                         Feng's explicit law (default); table, the law
+                         tabulated from the full GW solver (dc/gw_rough_table.h,
+                         within 3e-5 of it; its force begins at -6 sigma)
+     gwElliptic on|off   off: the rough-sphere law (spheres only); on:
                          GW closed form F = 4/3 n_asp E* Rc^1/2 sigma^3/2 gamma
                          F_3/2(-delta/sigma) (required for superquadrics)
      fengFitted on|off   Feng law coefficients from the fitted formulas instead
@@ -24,7 +28,8 @@
        type (walls: of the wall's type); a contact has sigma = (sigma_i^2 + sigma_j^2)^1/2;
      roughnessMu peratomtypepair [-]: Feng's mu in [1, 50] (Feng law);
      asperityCount peratomtypepair [-]: n_asp > 0 (GW closed form).
-   The rough force begins at overlap delta = -3 sigma (the closed form's
+   The rough force begins at overlap delta = -3 sigma (-6 sigma with
+   roughSphereLaw table; below, read 6 for 3 there) (the closed form's
    Gaussian tail is cut there too), before the surfaces touch, so the deck
    must set contact_distance_factor >= 1 + 3 sigma / (r_i + r_j) (walls:
    1 + 3 sigma / r_i; superquadrics: bounding radii for pairs,
@@ -46,6 +51,7 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,@DC_MODEL_ID@)
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_plastic.h"
+#include "dc/gw_rough_table.h"
 #include "dc/mindlin.h"
 
 namespace LIGGGHTS {
@@ -57,7 +63,8 @@ class NormalModel<GW_ROUGH> : public DcNormalModel
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
-    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false), ntypes(0)
+    roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false),
+    sphereLaw(DC_GW_SPHERE_FENG), ntypes(0)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
@@ -70,6 +77,9 @@ public:
     settings.registerOnOff("gwElliptic", gwElliptic, false);
     settings.registerOnOff("fengFitted", fengFitted, false);
     settings.registerOnOff("gwPlastic", gwPlastic, false);
+    static const char *const names[] = {"feng", "table"};
+    static const int values[] = {DC_GW_SPHERE_FENG, DC_GW_SPHERE_TABULATED};
+    settings.registerChoice("roughSphereLaw", sphereLaw, names, values, 2, "feng");
     plasticity.registerSettings(settings, 1.0, 108.0);
   }
 
@@ -106,15 +116,15 @@ public:
     }
     registry.registerProperty("roughnessMu", &createMu, caller);
     registry.connect("roughnessMu", mu, caller);
-    laws.assign((ntypes + 1) * (ntypes + 1), dc_feng_pair());
+    laws.assign((ntypes + 1) * (ntypes + 1), dc_gw_sphere_pair());
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
-        dc_feng_law law;
-        if (dc_feng_check(mu[i][j], &err))
+        if (dc_feng_check(mu[i][j], &err))   /* the table's domain of mu is the same */
           stopParam(err, i, j);
-        dc_feng_init(mu[i][j], fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, &law);
         /* sigma = 0 pairs take the Hertz branch and never read theirs */
-        if (roughness[i][j] > 0.0 && dc_feng_pair_init(&law, Yeff[i][j], roughness[i][j], &laws[i * (ntypes + 1) + j])) {
+        if (roughness[i][j] > 0.0 &&
+            dc_gw_sphere_pair_init(sphereLaw, fengFitted ? DC_FENG_FITTED : DC_FENG_TABLE, mu[i][j], Yeff[i][j],
+                                   roughness[i][j], &laws[i * (ntypes + 1) + j])) {
           char msg[256];
           snprintf(msg, sizeof msg, "surfaceRoughness %g with youngsModulus (E* = %g) for types %d and %d is out of "
                    "the range of doubles", roughness[i][j], Yeff[i][j], i, j);
@@ -129,7 +139,7 @@ public:
     roughForce(sidata, sidata.deltan, sidata.vn, i_forces, j_forces);
   }
 
-  /* Rough contact before the surfaces touch: -3 sigma < delta < 0. */
+  /* Rough contact before the surfaces touch: -reach sigma < delta < 0. */
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
@@ -139,22 +149,26 @@ public:
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (!gap.closeOverlap(lmp, sidata, 3.0 * sigma, delta, vn)) return publishNone(scdata);
+      if (!gap.closeOverlap(lmp, sidata, reachSigma() * sigma, delta, vn)) return publishNone(scdata);
     } else
 #endif
     {
-      /* most pairs inside the contact distance are farther apart than 3 sigma */
-      const double reach = sidata.radsum + 3.0 * sigma;
+      /* most pairs inside the contact distance are farther apart than the reach */
+      const double reach = sidata.radsum + reachSigma() * sigma;
       if (!sidata.is_wall && sidata.rsq >= reach * reach) return publishNone(scdata);
       delta = closeSphereContact(scdata, vn);
     }
-    if (delta <= -3.0 * sigma) return publishNone(scdata);
+    if (delta <= -reachSigma() * sigma) return publishNone(scdata);
     sidata.has_force_update = true;
     roughForce(sidata, delta, vn, i_forces, j_forces);
   }
 
 private:
-  /* Normal force at overlap delta (any sign > -3 sigma) and normal velocity vn. */
+  /* The force's reach before touch in units of sigma: 3 (Feng, the
+     closed form) or 6 (the tabulated sphere law). */
+  double reachSigma() const { return gwElliptic ? 3.0 : -dc_gw_sphere_reach(sphereLaw); }
+
+  /* Normal force at overlap delta (any sign > -reach sigma) and normal velocity vn. */
   void roughForce(SurfacesIntersectData &sidata, double delta, double vn,
                   ForceData &i_forces, ForceData &j_forces)
   {
@@ -162,7 +176,7 @@ private:
     double reff = sphereEffectiveRadius(sidata);
     const double sigma = roughness[itype][jtype];
     const double Y = Yeff[itype][jtype];
-    checkReach(sidata, 3.0 * sigma, "rough contacts begin 3 sigma = %g m before touch", 3.0 * sigma);
+    checkReach(sidata, reachSigma() * sigma, "rough contacts begin at delta = -%g m before touch", reachSigma() * sigma);
     /* the smooth contact's geometry; spheres: circular with Rc = reff */
     double axis[3];
     double *ax = axisWanted(axis);
@@ -196,7 +210,7 @@ private:
         P = s.F;
         Sn = s.kn;
       } else {
-        dc_feng_pair_force(&laws[itype * (ntypes + 1) + jtype], sqrt(reff), delta, &P, &Sn);
+        dc_gw_sphere_pair_force(&laws[itype * (ntypes + 1) + jtype], sqrt(reff), delta, &P, &Sn);
       }
       kn = delta > 0.0 ? P / delta : 0.0;
       if (delta > 0.0) kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(g.R_area * delta));
@@ -237,7 +251,8 @@ private:
   bool gwElliptic, fengFitted, gwPlastic;
   Plasticity plasticity;
   int ntypes;
-  std::vector<dc_feng_pair> laws;
+  int sphereLaw;   /* DC_GW_SPHERE_* */
+  std::vector<dc_gw_sphere_pair> laws;
   std::vector<dc_gw_plastic_params> plastic;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;

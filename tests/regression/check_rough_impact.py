@@ -6,10 +6,14 @@
   alpha' = -3 and the floor at 0 (dc/feng_rough.h);
 - no force before delta = -3 sigma, force from there on (before touch);
 - sigma = 0: gw_rough equals hertz_elliptic exactly;
-- 2 MPI ranks (the pair straddles the ranks) equal 1 rank; reference output.
+- 2 MPI ranks (the pair straddles the ranks) equal 1 rank; reference output;
+- roughSphereLaw table: the force along the trajectory equals the law
+  tabulated from the full GW solver as `dclaw gw_rough` evaluates it (c_core,
+  outside LIGGGHTS), zero before delta = -6 sigma.
 Usage: check_rough_impact.py WORKDIR [--update]"""
 import math
 import os
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -64,6 +68,36 @@ for name, s, Reff, overlap, force in cases:
     c.true(missing == 0 and n > 50, "%s: force on every row past -3 sigma (%d rows, %d without)" % (name, n, missing))
     # at a tabulated mu the law is the tables' polynomials; the output has 15 digits
     c.true(worst < 1e-9, "%s: force vs Feng Eq. 75 from Tables 4-6: worst rel. difference %.3g (tol 1e-9)" % (name, worst))
+
+# the tabulated sphere law: force at sampled rows against dclaw (same c_core law, same E*, R, sigma, mu)
+d = os.path.join(work, "table")
+run("rough_impact/in.rough_impact", d, variables={"model": "gw_rough", "sigma": sig, "opts": "roughSphereLaw table", "cdf": 1.07},
+    tag="table")
+tab = table(os.path.join(d, "rough.txt"))
+dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
+                     "..", "c_core", "dclaw")
+
+
+def table_force(delta, s, Reff):
+    out = subprocess.run([dclaw, "gw_rough", "--R1", repr(Reff), "--R2", repr(Reff), "--Estar", repr(Estar),
+                          "--sigma", repr(s), "--mu", "4", "--delta_min", repr(delta), "--delta_max", repr(delta),
+                          "--n", "1"], capture_output=True, text=True, check=True).stdout.split("\n")
+    head, row = out[0].split(","), out[1].split(",")
+    return float(row[head.index("force_gw_table")])
+
+
+for name, s, Reff, overlap, force in cases:
+    inside = [r for r in tab if overlap(r) > -6 * s]
+    early = sum(1 for r in tab if overlap(r) <= -6 * s and force(r) != 0.0)
+    c.true(early == 0 and len(inside) > 50, "%s, roughSphereLaw table: no force before delta = -6 sigma, %d rows after"
+           % (name, len(inside)))
+    worst = 0.0
+    for r in inside[:: max(1, len(inside) // 25)]:
+        want = table_force(overlap(r), s, Reff)
+        if want > 0.0:
+            worst = max(worst, abs(force(r) - want) / want)
+    c.true(worst < 1e-9, "%s, roughSphereLaw table: force vs dclaw's force_gw_table: worst rel. difference %.3g (tol 1e-9)"
+           % (name, worst))
 
 compare_tables(c, runs["smooth_gw"], runs["smooth_he"], 0.0, "sigma = 0: gw_rough equals hertz_elliptic")
 compare_tables(c, runs["rough_np2"], runs["rough"], 1e-13, "2 ranks equal 1 rank")
