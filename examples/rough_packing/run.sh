@@ -6,16 +6,20 @@
 # from the smooth case. Feng et al. report a near-linear decrease, 2% at 0.01.
 # Each run's dumps are converted for ParaView (tools/dump2vtk.py):
 # OUTDIR/sigma_r_<s>/paraview/particles.pvd and contacts.pvd.
-# Usage: bash examples/rough_packing/run.sh [OUTDIR]  (needs plugin/setup.sh first)
+# Usage: bash examples/rough_packing/run.sh [OUTDIR] [feng|table]  (needs plugin/setup.sh first)
+# The second argument picks gw_rough's rough-sphere law (roughSphereLaw; table:
+# the law tabulated from the full GW solver, with contact_distance_factor 1.07).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-$root/build/examples/rough_packing}
+law=${2:-feng}
+cdf=1.04; [ "$law" = table ] && cdf=1.07
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 for s in 0.0 0.001 0.005 0.01; do
   mkdir -p "$out/sigma_r_$s"; cd "$out/sigma_r_$s"
   echo "rough_packing: sigma_r = $s (a few minutes)"
   mpirun -np 2 "$root/build/bin/liggghts" -in "$root/examples/rough_packing/in.rough_packing" \
-         -var sigma_r "$s" -log log.liggghts > screen.txt
+         -var sigma_r "$s" -var law "$law" -var cdf "$cdf" -log log.liggghts > screen.txt
   python3 "$root/tools/dump2vtk.py" 'post/dump*.rough' 'post/contacts*.local' --log log.liggghts -o paraview
 done
 python3 - "$out" <<'PY'
