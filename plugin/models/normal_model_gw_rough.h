@@ -6,10 +6,10 @@
          fix ID all wall/gran model gw_rough tangential history [surface superquadric] primitive ... [settings]
          neigh_modify contact_distance_factor F   (see below)
    Settings: those of every project normal model (dc_model_base.h), and
-     roughSphereLaw feng|table   the rough-sphere law (gwElliptic off): feng,
-                         Feng's explicit law (default); table, the law
-                         tabulated from the full GW solver (dc/gw_rough_table.h,
-                         within 3e-5 of it; its force begins at -6 sigma)
+     roughSphereLaw table|feng   the rough-sphere law (gwElliptic off): table,
+                         the law tabulated from the full GW solver
+                         (dc/gw_rough_table.h, within 3e-5 of it; its force
+                         begins at -6 sigma; default); feng, Feng's explicit law
      gwElliptic on|off   off: the rough-sphere law (spheres only); on:
                          GW closed form F = 4/3 n_asp E* Rc^1/2 sigma^3/2 gamma
                          F_3/2(-delta/sigma) (required for superquadrics)
@@ -28,8 +28,9 @@
        type (walls: of the wall's type); a contact has sigma = (sigma_i^2 + sigma_j^2)^1/2;
      roughnessMu peratomtypepair [-]: Feng's mu in [1, 50] (Feng law);
      asperityCount peratomtypepair [-]: n_asp > 0 (GW closed form).
-   The rough force begins at overlap delta = -3 sigma (-6 sigma with
-   roughSphereLaw table; below, read 6 for 3 there) (the closed form's
+   The rough force begins at overlap delta = -6 sigma with the tabulated
+   sphere law and -3 sigma with the Feng law and the closed form (below,
+   read 6 for 3 with the table) (the closed form's
    Gaussian tail is cut there too), before the surfaces touch, so the deck
    must set contact_distance_factor >= 1 + 3 sigma / (r_i + r_j) (walls:
    1 + 3 sigma / r_i; superquadrics: bounding radii for pairs,
@@ -64,7 +65,7 @@ public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
     roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false),
-    sphereLaw(DC_GW_SPHERE_FENG), ntypes(0)
+    sphereLaw(DC_GW_SPHERE_TABULATED), ntypes(0)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
@@ -79,7 +80,7 @@ public:
     settings.registerOnOff("gwPlastic", gwPlastic, false);
     static const char *const names[] = {"feng", "table"};
     static const int values[] = {DC_GW_SPHERE_FENG, DC_GW_SPHERE_TABULATED};
-    settings.registerChoice("roughSphereLaw", sphereLaw, names, values, 2, "feng");
+    settings.registerChoice("roughSphereLaw", sphereLaw, names, values, 2, "table");
     plasticity.registerSettings(settings, 1.0, 108.0);
   }
 
