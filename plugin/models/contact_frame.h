@@ -1,7 +1,7 @@
 /* Pair / wall / superquadric contact geometry in one place: the effective
    radius, the overlap and normal velocity of a pair that does not touch,
-   and the application of a normal force (with its torque on non-spherical
-   particles). Data plumbing only. */
+   and the application of a normal and a tangential force (with their
+   torques). Data plumbing only. */
 #ifndef DC_PLUGIN_CONTACT_FRAME_H
 #define DC_PLUGIN_CONTACT_FRAME_H
 
@@ -119,6 +119,46 @@ inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, dou
 #else
   (void)x;
 #endif
+}
+
+/* Adds the tangential force F to i (-F to j) at the contact point, with its
+   torques (spheres: lever arms cri, crj along -en and +en; non-spherical
+   particles: from the contact point); walls scale by area_ratio. */
+inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
+                                 double **x, ForceData &i_forces, ForceData &j_forces)
+{
+  const double *n = sidata.en;
+  const double t[3] = {n[1] * F[2] - n[2] * F[1], n[2] * F[0] - n[0] * F[2], n[0] * F[1] - n[1] * F[0]};
+  double ti[3], tj[3];
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+  if (sidata.is_non_spherical) {
+    double xc[3];
+    LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
+    LAMMPS_NS::vectorCross3D(xc, F, ti);
+    if (!sidata.is_wall) {
+      const double Fj[3] = {-F[0], -F[1], -F[2]};
+      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
+      LAMMPS_NS::vectorCross3D(xc, Fj, tj);
+    }
+  } else
+#else
+  (void)x;
+#endif
+  {
+    for (int c = 0; c < 3; c++) {
+      ti[c] = -cri * t[c];
+      tj[c] = -crj * t[c];
+    }
+  }
+  const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
+  for (int c = 0; c < 3; c++) {
+    i_forces.delta_F[c] += scale * F[c];
+    i_forces.delta_torque[c] += scale * ti[c];
+    if (!sidata.is_wall) {
+      j_forces.delta_F[c] -= F[c];
+      j_forces.delta_torque[c] += tj[c];
+    }
+  }
 }
 
 }

@@ -196,48 +196,11 @@ private:
       error->one(FLERR, msg);
     }
     const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
-    applyTangentialForce(sidata, F, cri, crj, i_forces, j_forces);
+    applyTangentialForce(sidata, F, cri, crj, atom->x, i_forces, j_forces);
     if (twisting) {
       for (int c = 0; c < 3; c++) {
         i_forces.delta_torque[c] -= out.Mt * sidata.en[c];
         if (!sidata.is_wall) j_forces.delta_torque[c] += out.Mt * sidata.en[c];
-      }
-    }
-  }
-
-  /* The tangential force F on i (-F on j) at the contact point, with its
-     torques (spheres: lever arms cri, crj along -en and +en). */
-  void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
-                            ForceData &i_forces, ForceData &j_forces)
-  {
-    const double *n = sidata.en;
-    const double t[3] = {n[1] * F[2] - n[2] * F[1], n[2] * F[0] - n[0] * F[2], n[0] * F[1] - n[1] * F[0]};
-    double ti[3], tj[3];
-#ifdef NONSPHERICAL_ACTIVE_FLAG
-    if (sidata.is_non_spherical) {
-      double xc[3];
-      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, atom->x[sidata.i], xc);
-      LAMMPS_NS::vectorCross3D(xc, F, ti);
-      if (!sidata.is_wall) {
-        const double Fj[3] = {-F[0], -F[1], -F[2]};
-        LAMMPS_NS::vectorSubtract3D(sidata.contact_point, atom->x[sidata.j], xc);
-        LAMMPS_NS::vectorCross3D(xc, Fj, tj);
-      }
-    } else
-#endif
-    {
-      for (int c = 0; c < 3; c++) {
-        ti[c] = -cri * t[c];
-        tj[c] = -crj * t[c];
-      }
-    }
-    const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
-    for (int c = 0; c < 3; c++) {
-      i_forces.delta_F[c] += scale * F[c];
-      i_forces.delta_torque[c] += scale * ti[c];
-      if (!sidata.is_wall) {
-        j_forces.delta_F[c] -= F[c];
-        j_forces.delta_torque[c] += tj[c];
       }
     }
   }

@@ -29,6 +29,7 @@ cases = [
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
     ("jamari_ep without hardness", "in.sphere_base", dict(ok, model="jamari_ep tangential history", settings=""), "hardness"),
     ("plasticityCa outside [2, inf)", "in.sphere_base", dict(ok, model="jamari_ep tangential history", props=props("props_hardness"), settings="plasticityCa 1"), "plasticityCa = 1 for types 1 and 1 is outside [2, inf)"),
+    ("unknown classicalTangential law", "in.sphere_base", dict(ok, model="hertz_elliptic tangential classical classicalTangential springy", settings=""), "(options: coulomb diRenzo incremental langston"),
     ("coincident spheres", "in.sphere_base", dict(ok, model="hertz tangential history", settings="", x0="0"), "Atoms 1 and 2 are at the same position"),
     ("sphere centre on a wall", "in.sphere_wall", {"props": props("props_full"), "z0": "0"}, "Atom 1 has its centre on the wall"),
     ("NaN position", "in.sphere_wall", {"props": props("props_full"), "fx": "v_nan"}, "Atom 1 has a non-finite position"),

@@ -10,7 +10,11 @@ that is moved back and forth tangentially (inputs/shear_cycle), with
   x = F*/(mu Fn) (Eq. 69 written with the pair stiffness), within 1%;
 - stock `tangential history` beside it (a linear spring: no loss below
   mu Fn);
-- the loop against its committed reference.
+- the loop against its committed reference;
+- `tangential classical` (classicalTangential springSliding, stiffness
+  mindlin 8 G* a) at amplitude 2 um, beyond sliding: the first loading slope
+  k0 and the energy per cycle 4 mu Fn (X - mu Fn / k0) of a linear spring
+  with Coulomb sliding, within 1%; incremental (Walton-Braun) beside it.
 Usage: check_shear_cycle.py WORKDIR [--update]"""
 import math
 import os
@@ -62,6 +66,27 @@ print("     energy per cycle: cmd_tangential %.6g J, Eq. 69 %.6g J, stock tangen
 # a linear spring's loop has no area; what the trapezoid sum over the
 # sampled wall positions leaves is below 1% of the Mindlin loop
 c.true(Wh < 1e-2 * W, "stock tangential history: no loss below mu Fn (%.3g J, sampling residue)" % Wh)
+# the classical linear spring with sliding at an amplitude beyond sliding
+X = 2e-6
+dcl = os.path.join(work, "classical")
+run("shear_cycle/in.shear_cycle", dcl, variables={"dir": os.path.join(ROOT, "inputs", "shear_cycle"), "tmodel": "classical",
+                                                  "opts": "tangential_damping off classicalTangential springSliding",
+                                                  "amp": X}, tag="classical")
+rc = table(os.path.join(dcl, "loop.txt"))
+early = [r for r in rc[1:len(rc) // 12] if 0 < abs(r[2]) < 0.5 * mu * Fn]
+slope = max(abs(r[2] / r[1]) for r in early)
+c.rel(slope, k0, 1e-3, "classical springSliding: first loading slope vs 8 G* a (%d rows)" % len(early))
+Wc = loop_energy(cycles(rc)[-1])
+Wspring = 4 * mu * Fn * (X - mu * Fn / k0)
+c.rel(Wc, Wspring, 1e-2, "classical springSliding: energy per cycle vs 4 mu Fn (X - mu Fn / k0)")
+dci = os.path.join(work, "classical_incremental")
+run("shear_cycle/in.shear_cycle", dci, variables={"dir": os.path.join(ROOT, "inputs", "shear_cycle"), "tmodel": "classical",
+                                                  "opts": "tangential_damping off classicalTangential incremental",
+                                                  "amp": X}, tag="incremental")
+Wi = loop_energy(cycles(table(os.path.join(dci, "loop.txt")))[-1])
+c.true(0.0 < Wi < Wspring, "classical incremental: a loop with less loss than the linear spring's (%.4g J < %.4g J)" % (Wi, Wspring))
+print("     amplitude %g m: energy per cycle, classical springSliding %.6g J (closed form %.6g J), incremental %.6g J"
+      % (X, Wc, Wspring, Wi))
 ref = os.path.join(ROOT, "inputs", "shear_cycle", "reference", "loop.txt")
 if update:
     save_reference(os.path.join(work, "cmd_tangential", "loop.txt"), ref, EVERY)
