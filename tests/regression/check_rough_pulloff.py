@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""Regression: a rough adhesive sphere pressed onto a wall and pulled off
+(inputs/rough_pulloff), gw_rough (GW closed form) with cohesion gw_adhesion:
+- the force along the path against the exact c_core law of rough contact
+  with adhesive JKR summits (dc/gw_rough_adhesive.h, as `dclaw gw_rough
+  --w` evaluates it, outside LIGGGHTS; less the elastic GW tail beyond
+  -3 sigma, where gw_rough cuts its elastic force): on approach the loading branch,
+  within 1e-5 relative where |F| > 1e-3 of the largest force; on retraction,
+  once past the blend band next to the deepest overlap, the unloading
+  branch within 1e-3 (the table's stated unloading accuracy is 3.8e-4);
+- hysteresis: the pull-off force (the most negative force on retraction)
+  exceeds the largest pull on approach, and equals the exact unloading
+  branch's minimum within 1e-3;
+- workOfAdhesion 0 equals gw_rough without a cohesion model exactly;
+- 2 MPI ranks equal 1 rank.
+Usage: check_rough_pulloff.py WORKDIR"""
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from regress import ROOT, compare_tables, run, start, table
+
+work, _, c = start()
+R, E, nu, sig, w, dmax = 1e-3, 5e6, 0.3, 1e-6, 0.05, 4e-6
+Estar = 1.0 / (2 * (1 - nu ** 2) / E)
+dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
+                     "..", "c_core", "dclaw")
+
+
+def exact(d0, d1, n):
+    """(delta, loading F, unloading F) of the exact law on a grid."""
+    out = subprocess.run([dclaw, "gw_rough", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(Estar), "--sigma", repr(sig),
+                          "--n_asp", "1", "--w", repr(w), "--delta_min", repr(d0), "--delta_max", repr(d1), "--n", str(n)],
+                         capture_output=True, text=True, check=True).stdout.strip().split("\n")
+    head = out[0].split(",")
+    rows = [[float(x) for x in l.split(",")] for l in out[1:]]
+    il, iu, ig = head.index("force_adhesive_loading"), head.index("force_adhesive_unloading"), head.index("force_gw_elliptic")
+    # gw_rough cuts the elastic GW force at delta = -3 sigma (its Gaussian
+    # tail); the cohesion model adds the adhesive part to it: beyond the cut
+    # the run carries the exact law less the elastic tail
+    return [(r[0], r[il] - (r[ig] if r[0] <= -3 * sig else 0.0), r[iu] - (r[ig] if r[0] <= -3 * sig else 0.0))
+            for r in rows]
+
+
+runs = {}
+for name, variables, ranks in (("adhesive", {}, 1), ("adhesive_np2", {}, 2), ("w0", {"w": 0.0}, 1),
+                               ("none", {"w": 0.0, "coh": "off"}, 1)):
+    d = os.path.join(work, name)
+    run("rough_pulloff/in.rough_pulloff", d, ranks=ranks, variables=variables, tag=name)
+    runs[name] = table(os.path.join(d, "pull.txt"))
+
+rows = runs["adhesive"]
+deltas = [R - r[1] for r in rows]
+k_turn = max(range(len(rows)), key=lambda k: deltas[k])
+Fmax = max(abs(r[2]) for r in rows)
+# sample rows on approach and on retraction; the exact law at their overlaps
+approach = [k for k in range(1, k_turn, 7) if abs(rows[k][2]) > 1e-3 * Fmax]
+retract = [k for k in range(k_turn + 1, len(rows), 7) if abs(rows[k][2]) > 1e-3 * Fmax
+           and deltas[k] < deltas[k_turn] - 0.5e-6]   # past the blend band (|delta_break| < 0.5 um here)
+
+
+def worst(ks, col):
+    err = 0.0
+    for k in ks:
+        (_, Fl, Fu), = exact(deltas[k], deltas[k], 1)
+        want = Fl if col == 1 else Fu
+        err = max(err, abs(rows[k][2] - want) / max(abs(want), 1e-3 * Fmax))
+    return err
+
+
+el, eu = worst(approach, 1), worst(retract, 2)
+c.true(len(approach) > 20 and el < 1e-5, "approach (%d rows): force vs the exact loading branch, worst %.3g (tol 1e-5)" % (len(approach), el))
+c.true(len(retract) > 20 and eu < 1e-3, "retraction (%d rows): force vs the exact unloading branch, worst %.3g (tol 1e-3)" % (len(retract), eu))
+pull_in = min(r[2] for r in rows[:k_turn])
+pull_off = min(r[2] for r in rows[k_turn:])
+grid = exact(-6 * sig, 0.5e-6, 2001)
+pull_exact = min(Fu for _, _, Fu in grid)
+c.true(pull_off < pull_in < 0.0, "hysteresis: pull-off %.5g N beyond the largest pull on approach %.5g N" % (pull_off, pull_in))
+c.rel(pull_off, pull_exact, 1e-3, "pull-off force vs the exact unloading branch's minimum (grid of 2001)")
+compare_tables(c, runs["w0"], runs["none"], 0.0, "workOfAdhesion 0 equals gw_rough without cohesion")
+compare_tables(c, runs["adhesive_np2"], rows, 1e-13, "2 ranks equal 1 rank")
+c.finish()
