@@ -66,7 +66,8 @@ public:
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
     kuwabaraKono(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
-    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), name_(name), unsupported_(unsupported)
+    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), name_(name), unsupported_(unsupported),
+    hertzRangeWarned_(false)
   {}
 
   void registerSettings(Settings &settings)
@@ -299,6 +300,22 @@ protected:
       }
   }
 
+  /* Hertz theory holds while the contact semi-axis a is small against the
+     bodies' curvature radii: a warning (once per model and process, naming
+     the atoms) when a > R_minor / 2 (Fessler & Ollerton's limit, quoted in
+     the review), a2 = a^2. */
+  void checkHertzRange(const SurfacesIntersectData &sidata, double a2, double R_minor)
+  {
+    if (a2 <= 0.25 * R_minor * R_minor || hertzRangeWarned_) return;
+    hertzRangeWarned_ = true;
+    char msg[320];
+    snprintf(msg, sizeof msg, "Normal model %s: the contact of atom %d with %s %d has a semi-axis %g m above half "
+             "its smaller relative curvature radius (%g m / 2), where Hertz theory no longer holds (overlap %g m; "
+             "warned once)", name_, (int)atom->tag[sidata.i], sidata.is_wall ? "wall type" : "atom",
+             sidata.is_wall ? sidata.jtype : (int)atom->tag[sidata.j], sqrt(a2), R_minor, sidata.deltan);
+    error->warning(FLERR, msg);
+  }
+
   /* Publishes the patch of a contact (when stored). */
   void publish(SurfacesCloseData &d, const dc_contact &c, const double *axis)
   {
@@ -340,6 +357,7 @@ private:
 
   const char *name_;
   int unsupported_;
+  bool hertzRangeWarned_;
   ContactPatchWriter patch;
 };
 

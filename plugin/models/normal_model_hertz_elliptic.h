@@ -50,6 +50,9 @@ public:
       hertzGeometry(R_major, R_minor, g);
       r_force = g.R_force;
       r_area = g.R_area;
+      checkHertzRange(sidata, 2.0 * g.R_major * deltan * g.D / g.K, g.R_minor);   /* a^2 = 2 R_major delta D / K */
+    } else {
+      checkHertzRange(sidata, r_force * deltan, r_force);                         /* a^2 = R delta */
     }
     double kn, Sn;
     const double root = dc_hertz_stiffness(Yeff[itype][jtype], r_force, deltan, &kn, &Sn);

@@ -6,7 +6,8 @@ does not take, superquadrics without `surface superquadric`; and the stock
 failures the project's patches turn into messages: coincident spheres, a
 sphere centre on a wall, a position that overflows, youngsModulus <= 0 with
 soft_particles, a property value that is not a finite number, write_data
-with superquadrics (read back) and with contact history (a warning).
+with superquadrics (read back) and with contact history (a warning); a
+contact beyond the range of Hertz theory (a warning).
 Usage: check_deck_errors.py WORKDIR"""
 import os
 import sys
@@ -59,6 +60,12 @@ want = {1: [0.001, 0.0015, 0.002, 2, 2, 2500, 0.0, 0.0, 0.0], 2: [0.0012, 0.0012
 c.true(rows.keys() == want.keys() and all(abs(rows[i][k] - want[i][k]) <= 1e-12 * max(1.0, abs(want[i][k]))
                                           for i in want for k in range(9)),
        "superquadrics read back from write_data: shape, blockiness, density, position %s" % rows)
+# Hertz theory beyond its range: a warning, once, naming the contact
+code3, out3 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range"),
+                  variables=dict(ok, model="hertz_elliptic tangential history", x0="0.0007"), tag="range", expect_error=True)
+warn = [l for l in out3.splitlines() if "where Hertz theory no longer holds" in l]
+c.true(code3 == 0 and len(warn) >= 1 and "atom 1 with atom 2" in warn[0] and len(set(warn)) == 1,
+       "overlap beyond the Hertz range: one warning naming the contact (%s)" % (warn[0].strip() if warn else "none"))
 # the same base deck with full input runs
 code, out = run("deck_errors/in.sphere_base", os.path.join(work, "good"), variables=dict(ok, model="hertz_elliptic tangential history"), tag="ok", expect_error=True)
 c.true(code == 0, "complete deck runs (exit %d)" % code)
