@@ -3,8 +3,9 @@
 crash or a silent NaN): unknown model, missing material property, a setting
 outside its range, a missing property for an option, a setting the model
 does not take, superquadrics without `surface superquadric`; and the stock
-failures the project's patches turn into messages: coincident spheres, a
-sphere centre on a wall, a position that overflows, youngsModulus <= 0 with
+failures the project's patches and decks turn into messages: a particle that
+leaves the box (thermo_modify lost error), coincident spheres, a
+sphere centre on a wall, a position that is not a number, youngsModulus <= 0 with
 soft_particles, a property value that is not a finite number, write_data
 with superquadrics (read back) and with contact history (a warning); a
 contact beyond the range of Hertz theory (a warning).
@@ -33,6 +34,7 @@ cases = [
     ("unknown classicalTangential law", "in.sphere_base", dict(ok, model="hertz_elliptic tangential classical classicalTangential springy", settings=""), "(options: coulomb diRenzo incremental langston"),
     ("coincident spheres", "in.sphere_base", dict(ok, model="hertz tangential history", settings="", x0="0"), "Atoms 1 and 2 are at the same position"),
     ("sphere centre on a wall", "in.sphere_wall", {"props": props("props_full"), "z0": "0"}, "Atom 1 has its centre on the wall"),
+    ("a particle leaves the box (thermo_modify lost error)", "in.sphere_wall", {"props": props("props_full"), "fx": "1e308"}, "Lost atoms"),
     ("NaN position", "in.sphere_wall", {"props": props("props_full"), "fx": "v_nan"}, "Atom 1 has a non-finite position"),
     ("youngsModulus 0 with soft_particles", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_soft_zero")), "youngsModulus for type 1 is 0: it must be > 0"),
     ("youngsModulus 1e999", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_inf")), "Fix property/global youngsModulus: value 1 is '1e999', not a finite number"),
