@@ -82,6 +82,7 @@ public:
     dc_jamari_state *h = reinterpret_cast<dc_jamari_state *>(&sidata.contact_history[history_offset]);
     if (!sq && h->delta_max == 0.0 && sidata.deltan <= yield_ratio[k] * R_major) {
       /* a sphere contact below first yield with no plastic memory: hertz_elliptic's arithmetic */
+      checkHertzRange(sidata, R_major * sidata.deltan, R_major);
       double kn, Sn;
       const double root = dc_hertz_stiffness(Y, R_major, sidata.deltan, &kn, &Sn);
       applyForce(sidata, kn * sidata.deltan, sidata.deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root),
@@ -111,6 +112,7 @@ public:
                "%s", sidata.deltan, R_major, R_minor, Y, itype, jtype, dc_status_str(st));
       stop(false, msg);
     }
+    checkHertzRange(sidata, c.a * c.a, g.R_minor);
     const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(c.a * c.b));
     /* damping on the tangent stiffness; the secant stiffness for LIGGGHTS' time-step checks */
     const double kn = sidata.deltan > 0.0 ? c.F / sidata.deltan : 0.0;
