@@ -201,9 +201,7 @@ static void feng_force_scaled(const dc_feng_law *law, double Estar, double R, do
     dc_feng_pair_force(&unit, 1.0, delta / sigma, &Pu, &knu);
     L = sigma;
   }
-  const double sR = sqrt(R), sL = sqrt(L);
-  *P = dc_scaled_product(6, (const double[]){4.0 / 3.0, Estar, sR, L, sL, Pu});
-  *kn = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sR, sL, knu});
+  dc_rough_sphere_scale(Estar, R, L, Pu, knu, P, kn);
 }
 
 int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
@@ -214,13 +212,7 @@ int dc_feng_force(const dc_feng_law *law, double Estar, double R, double sigma,
     return DC_EDOM;
   double Pv, knv;
   if (sigma == 0.0) {                         /* Hertz */
-    const double c = 4.0 / 3.0 * Estar * sqrt(R), sd = delta > 0.0 ? sqrt(delta) : 0.0;
-    Pv = c * fmax(delta, 0.0) * sd;
-    knv = 1.5 * c * sd;
-    if (!(isfinite(Pv) && isfinite(knv))) {
-      Pv = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sqrt(R), fmax(delta, 0.0), sd});
-      knv = dc_scaled_product(4, (const double[]){2.0, Estar, sqrt(R), sd});
-    }
+    dc_rough_sphere_hertz(Estar, R, delta, &Pv, &knv);
   } else {
     dc_feng_pair p;
     Pv = knv = NAN;

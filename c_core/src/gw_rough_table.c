@@ -127,9 +127,7 @@ static void force_scaled(const dc_gw_table_law *law, double Estar, double R, dou
     knu = 1.5 - 5.0 / 6.0 * law->A * q23 - 0.5 * law->B * q;
     L = delta;
   }
-  const double sR = sqrt(R), sL = sqrt(L);
-  *P = dc_scaled_product(6, (const double[]){4.0 / 3.0, Estar, sR, L, sL, Pu});
-  *kn = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sR, sL, knu});
+  dc_rough_sphere_scale(Estar, R, L, Pu, knu, P, kn);
 }
 
 int dc_gw_table_force(const dc_gw_table_law *law, double Estar, double R, double sigma,
@@ -140,13 +138,7 @@ int dc_gw_table_force(const dc_gw_table_law *law, double Estar, double R, double
     return DC_EDOM;
   double Pv, knv;
   if (sigma == 0.0) {                         /* Hertz */
-    const double c = 4.0 / 3.0 * Estar * sqrt(R), sd = delta > 0.0 ? sqrt(delta) : 0.0;
-    Pv = c * fmax(delta, 0.0) * sd;
-    knv = 1.5 * c * sd;
-    if (!(isfinite(Pv) && isfinite(knv))) {
-      Pv = dc_scaled_product(5, (const double[]){4.0 / 3.0, Estar, sqrt(R), fmax(delta, 0.0), sd});
-      knv = dc_scaled_product(4, (const double[]){2.0, Estar, sqrt(R), sd});
-    }
+    dc_rough_sphere_hertz(Estar, R, delta, &Pv, &knv);
   } else {
     const double c = 4.0 / 3.0 * Estar, inv_sigma = 1.0 / sigma, c_sigma = c * sigma * sqrt(sigma);
     Pv = knv = NAN;
