@@ -40,6 +40,20 @@ static dc_patch patch_of(double a, double b, const double *axis, double Fb)
   return p;
 }
 
+/* The unit circle most tests use: nu = 0.3, one body on a rigid one
+   (s0 = 1, s1 = nu), mu = 0.5 and F_bound = 2, semi-axis (2 - nu)/8, so
+   that k0 = 1 and mu F_n = 1; the frame n, e1, e2. */
+static dc_patch unit_circle(dc_mindlin_pair *m, dc_cmd_params *p, double n[3], double e1[3], double e2[3])
+{
+  const double nu = 0.3;
+  const dc_mindlin_pair mm = {1.0, nu};
+  const dc_cmd_params pp = {0.5, 0.0, 0, 0};
+  *m = mm;
+  *p = pp;
+  frame(n, e1, e2);
+  return patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+}
+
 /* one step along the unit direction e by ds (plus a normal part that the
    law must ignore) */
 static int step_along(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *pa, const double *n,
@@ -273,12 +287,10 @@ static void test_nested(void)
 {
   FILE *f = check_open_reference("cmd_tangential.csv");
   if (!f) return;
-  const double nu = 0.3;
-  const dc_mindlin_pair m = {1.0, nu};
-  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  dc_mindlin_pair m;
+  dc_cmd_params p;
   double n[3], e1[3], e2[3];
-  frame(n, e1, e2);
-  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);   /* k0 = 1, mu F_n = 1 */
+  const dc_patch pa = unit_circle(&m, &p, n, e1, e2);   /* k0 = 1, mu F_n = 1 */
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
@@ -315,12 +327,10 @@ static void masing_ref(int ntp, const double *td, const double *tf, double d, do
    largest error within the cap and beyond */
 static void turn_sequence(double amp0, double q, double *worst_in, double *worst_out)
 {
-  const double nu = 0.3;
-  const dc_mindlin_pair m = {1.0, nu};
-  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  dc_mindlin_pair m;
+  dc_cmd_params p;
   double n[3], e1[3], e2[3];
-  frame(n, e1, e2);
-  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  const dc_patch pa = unit_circle(&m, &p, n, e1, e2);
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
@@ -538,12 +548,10 @@ static void test_oblique(void)
    path's velocity */
 static void circle_path(double R, double *Fmin, double *Fmax, double *lag, double *lip)
 {
-  const double nu = 0.3;
-  const dc_mindlin_pair m = {1.0, nu};
-  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  dc_mindlin_pair m;
+  dc_cmd_params p;
   double n[3], e1[3], e2[3];
-  frame(n, e1, e2);
-  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  const dc_patch pa = unit_circle(&m, &p, n, e1, e2);
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
@@ -585,12 +593,10 @@ static void test_3d(void)
 
   /* an L-shaped path: the stuck core and the slipping rim both resist the
      turn, the perpendicular stiffness is k0 at first; then sliding along e2 */
-  const double nu = 0.3;
-  const dc_mindlin_pair m = {1.0, nu};
-  dc_cmd_params p = {0.5, 0.0, 0, 0};
+  dc_mindlin_pair m;
+  dc_cmd_params p;
   double n[3], e1[3], e2[3];
-  frame(n, e1, e2);
-  const dc_patch pa = patch_of((2.0 - nu) / 8.0, (2.0 - nu) / 8.0, e1, 2.0);
+  const dc_patch pa = unit_circle(&m, &p, n, e1, e2);
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
