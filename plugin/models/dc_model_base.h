@@ -64,8 +64,7 @@ public:
   DcNormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *c, const char *name,
                 int unsupported = 0) :
     NormalModelBase(lmp, hsetup, c),
-    Yeff(NULL), Geff(NULL), betaeff(NULL), viscoelasticTime(NULL),
-    kuwabaraKono(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
+    Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
     dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), name_(name), unsupported_(unsupported),
     hertzRangeWarned_(false)
   {}
@@ -114,16 +113,13 @@ public:
     double **coef = NULL;
     if (dampingLaw == DC_DAMPING_VISCOELASTIC) {
       registry.registerProperty("viscoelasticTime", &createViscoelasticTime, caller.c_str());
-      registry.connect("viscoelasticTime", viscoelasticTime, caller.c_str());
-      coef = viscoelasticTime;
+      registry.connect("viscoelasticTime", coef, caller.c_str());
     } else if (dampingLaw == DC_DAMPING_KUWABARA_KONO) {
       registry.registerProperty("kuwabaraKonoDamping", &createKuwabaraKono, caller.c_str());
-      registry.connect("kuwabaraKonoDamping", kuwabaraKono, caller.c_str());
-      coef = kuwabaraKono;
+      registry.connect("kuwabaraKonoDamping", coef, caller.c_str());
     } else if (dampingLaw == DC_DAMPING_RESTITUTION) {
       registry.registerProperty("betaeff", &MODEL_PARAMS::createBetaEff, caller.c_str());
-      registry.connect("betaeff", betaeff, caller.c_str());
-      coef = betaeff;
+      registry.connect("betaeff", coef, caller.c_str());
     } else if (dampingLaw == DC_DAMPING_TSUJI) {
       registry.registerProperty("coefficientRestitution", &MODEL_PARAMS::createCoeffRest, caller.c_str());
       double **e = registry.getMatrixProperty("coefficientRestitution", caller.c_str())->data;
@@ -331,7 +327,7 @@ protected:
   /* The major-axis direction is worth computing only for a stored patch. */
   double *axisWanted(double *axis) const { return patch.active() ? axis : NULL; }
 
-  double **Yeff, **Geff, **betaeff, **viscoelasticTime, **kuwabaraKono;
+  double **Yeff, **Geff;
   bool tangential_damping, limitForce, viscoelastic, contactPatch;
   int dampingLaw;                  /* dc_damping_law */
   std::vector<double> dampCoef;    /* its coefficient per type pair */
