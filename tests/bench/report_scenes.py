@@ -63,6 +63,8 @@ RUNS = {
     "hertz_102": timed(SPHERES, model="hertz", cdf="1.02"),
     "jkr": timed(SPHERES, model="jkr_elliptic", cdf="1.02"),
     "hertz": packed(model="hertz"),
+    # the same law on another jittered lattice: the resolution of the packing figures
+    "hertz_seed": packed(model="hertz", seed="15485863"),
     "reference": packed(model="hertz_elliptic", tmodel="cmd_tangential"),
 }
 for d in ("tsuji", "viscoelastic", "kuwabaraKono", "none"):
@@ -91,6 +93,8 @@ ROWS = [
     ("classical normal", "hertz_elliptic + cmd_tangential (reference)", "hertz: restitution damping", "reference",
      "hertz", "reference"),
     ("classical normal", "hertz: restitution damping", None, "hertz", "hertz", "reference"),
+    ("classical normal", "hertz: restitution damping (other jitter seed)", "hertz: restitution damping",
+     "hertz_seed", "hertz", "reference"),
     ("classical normal", "hertz: tsuji damping", None, "damp_tsuji", "hertz", "reference"),
     ("classical normal", "hertz: viscoelastic damping (A fitted)", None, "damp_viscoelastic", "hertz", "reference"),
     ("classical normal", "hertz: kuwabaraKono damping (eta fitted)", None, "damp_kuwabaraKono", "hertz", "reference"),
@@ -122,7 +126,8 @@ def run(lmp, key, deck, variables, work, rep):
     if out.returncode == 0 and loop:
         return float(loop[0].split()[3])
     err = [l for l in out.stdout.split("\n") if "ERROR" in l]
-    sys.stderr.write("report_scenes: %s left out (rep %d): %s\n" % (key, rep, err[0] if err else "no loop time"))
+    why = err[0] if err else "no loop time"
+    sys.stderr.write("report_scenes: %s left out (repetition %d): %s\n" % (key, rep + 1, why))
     return None
 
 
