@@ -21,7 +21,14 @@ contact point):
   at 5e-4 m/s) the tangential model acts instead: cmd_tangential's Mindlin
   loading curve, classical springSliding's 8 G* a x, and no spin moment;
 - 2 MPI ranks equal 1 rank (bodies on both sides of the split, one
-  crossing it), and the committed reference.
+  crossing it), and the committed reference;
+- a sphere launched without spin on the plane (in.rolling_release,
+  integrated): it slides at mu m g (the saturated creep force), the slip
+  ends at the time of Coulomb friction, and it rolls on at
+  v0 / (1 + I / (m c^2)) with no force (no rolling resistance); without the
+  rolling model (cmd_tangential alone) the same speed; the explicit time
+  step limit of the creep force, dt < 2 m_eff V / (G c^2 c11), holds: below
+  it the force settles, above it chatters.
 Prints the creep force against the longitudinal creepage.
 Usage: check_rolling_creep.py WORKDIR [--update]"""
 import math
@@ -212,6 +219,51 @@ for shape in ("sphere", "disc"):
         if update:
             save_reference(mine, ref_path)
         compare_tables(c, table(mine), table(ref_path), 1e-9, "%s: vs reference" % tag)
+
+# A sphere launched without spin on the plane (in.rolling_release, nve/sphere):
+# it slides at mu m g, spins up and ends rolling without slip; the angular
+# momentum about the contact point gives v_f = v0 / (1 + I / (m c^2)).
+V0, GRAV = 0.1, 9.81
+m = 2500 * 4 / 3 * math.pi * R ** 3
+I = 0.4 * m * R * R
+
+
+def release(name, rmodel, dt, steps):
+    d = os.path.join(work, "release_" + name)
+    run("rolling_creep/in.rolling_release", d, variables={"rmodel": rmodel, "dt": dt, "steps": steps}, tag="run")
+    return table(os.path.join(d, "release.txt"))
+
+
+rows = release("kalker", "kalker", 1e-6, 12000)
+cl = R - 0.5 * (R - rows[-1][5])                 # lever arm R - delta/2
+v_f = V0 / (1 + I / (m * cl * cl))
+tstar = V0 / (MU * GRAV * (1 + m * cl * cl / I))  # slip v - omega c reaches 0
+slide = [r for r in rows if r[0] < 0.9 * tstar]
+ws = max(abs(-r[3] - MU * m * GRAV) / (MU * m * GRAV) for r in slide)
+c.true(ws <= 1e-9, "release: while sliding (creepage 2 down to 0.14) the saturated creep force is mu m g (worst %.2g, "
+       "%d samples)" % (ws, len(slide)))
+t_end = next(r[0] for r in rows if abs(r[1] - r[2] * cl) <= 1e-6 * V0)
+c.rel(t_end, tstar, 1e-2, "release: sliding ends (slip below 1e-6 v0) at v0 / (mu g (1 + m c^2 / I))")
+last = rows[-1]
+c.rel(last[1], v_f, 1e-6, "release: rolls on at v0 / (1 + I / (m c^2)) (angular momentum about the contact point)")
+c.true(abs(last[1] - last[2] * cl) <= 1e-9 * V0 and abs(last[3]) <= 1e-9 * MU * m * GRAV,
+       "release: then no slip (%.2g m/s) and no creep force (%.2g N): no rolling resistance"
+       % (last[1] - last[2] * cl, last[3]))
+off = release("off", "off", 1e-6, 12000)
+c.rel(off[-1][1], v_f, 1e-3, "release without the rolling model (cmd_tangential alone): the same final speed, "
+      "within its undamped spring's oscillation")
+# Explicit time step of the creep force near zero creepage: F = -(G c^2 c11 / V) s
+# is a viscous force on the slip, stable while dt < 2 m_eff V / (G c^2 c11),
+# m_eff = 1 / (1/m + c^2/I); beyond, the force flips every step (bounded by mu F_n)
+delta = R - last[5]
+c11 = law.coefficients(TABLE, 1.0)[0]
+dt_s = 2 * v_f / (G * R * delta * c11 * (1 / m + cl * cl / I))
+for f, stable in ((0.8, True), (1.5, False)):
+    dt = f * dt_s
+    r2 = release("dt%.1f" % f, "kalker", dt, int(0.012 / dt))
+    tail = max(abs(r[3]) for r in r2[-20:]) / (MU * m * GRAV)
+    c.true((tail <= 1e-6) == stable, "release at dt = %.1f x %.3g s (the creep force's stability limit): %s "
+           "(|F_x| / mu m g at the end %.2g)" % (f, dt_s, "settles" if stable else "chatters", tail))
 
 print("     creep force against longitudinal creepage (F_x / mu F_n: LIGGGHTS, independent law)")
 for tag, xi, got, want in curves:
