@@ -430,6 +430,30 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
   if (!finite3(n) || !finite3(dv) || !finite3(dw)) return DC_EDOM;
   if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   if (!curvature_ok(ci, n) || !curvature_ok(cj, n)) return DC_EDOM;
+  if (ci->k1 == ci->k2 && cj->k1 == cj->k2) {
+    /* both isotropic (spheres, a sphere on a plane): K_i + K_j = (k_i + k_j) I,
+       no basis needed, the same Vbar */
+    const double ks = ci->k1 + cj->k1;
+    if (ks > 0.0 && isfinite(ks) && ks >= k_min) {
+      const double dvn = dot3(dv, n);
+      double s[3], r[3], u[3];
+      for (int i = 0; i < 3; i++) s[i] = dv[i] - dvn * n[i];
+      cross3(dw, n, r);
+      const double h = 0.5 * (ci->k1 / ks - cj->k1 / ks);
+      for (int i = 0; i < 3; i++) u[i] = r[i] / ks + h * s[i];
+      const double un = dot3(u, n);
+      for (int i = 0; i < 3; i++) u[i] -= un * n[i];
+      double V = sqrt(dot3(u, u));
+      if (!(V > 1e-150 && V < 1e150)) V = hypot(hypot(u[0], u[1]), u[2]);   /* squares out of range */
+      const double spin = dot3(dw, n);
+      if (!isfinite(V) || !finite3(s) || !isfinite(spin)) return DC_ERANGE;
+      k->V = V;
+      for (int i = 0; i < 3; i++) k->ex[i] = V > 0.0 ? u[i] / V : 0.0;
+      memcpy(k->slip, s, sizeof s);
+      k->spin = spin;
+      return DC_OK;
+    }
+  }
   /* a basis of the tangent plane */
   double e1[3], e2[3];
   const double *d = ci->k1 != ci->k2 ? ci->d1 : (cj->k1 != cj->k2 ? cj->d1 : NULL);
