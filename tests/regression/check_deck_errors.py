@@ -4,10 +4,10 @@ crash or a silent NaN): unknown model, missing material property, a setting
 outside its range, a missing property for an option, a setting the model
 does not take, superquadrics without `surface superquadric`, the rolling
 model `kalker` without its property, with a setting out of range, under a
-normal model that publishes no contact patch or a tangential model that
-does not hand over; and the stock
-failures the project's patches and decks turn into messages: a particle that
-leaves the box (thermo_modify lost error), coincident spheres, a
+normal model that publishes no contact patch or with a tangential model
+that does not hand over; and the stock failures the project's patches and
+decks turn into messages: a particle that leaves the box (thermo_modify
+lost error), coincident spheres, a
 sphere centre on a wall, a position that is not a number, youngsModulus <= 0 with
 soft_particles, a property value that is not a finite number, write_data
 with superquadrics (read back) and with contact history (a warning); a
