@@ -6,8 +6,10 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 # python3-vtk9: VTK's Python bindings for the system python3, with which
-# tests/regression/check_paraview.py reads the ParaView files back
-packages="build-essential cmake ccache dpkg-dev patch xz-utils libopenmpi-dev openmpi-bin libgsl-dev python3 python3-vtk9"
+# tests/regression/check_paraview.py reads the ParaView files back;
+# python3-matplotlib: the plotting library with which dclaw plot draws PNGs
+# (c_core/cli/plot.py)
+packages="build-essential cmake ccache dpkg-dev patch xz-utils libopenmpi-dev openmpi-bin libgsl-dev python3 python3-vtk9 python3-matplotlib"
 missing=""
 for p in $packages; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing="$missing $p"

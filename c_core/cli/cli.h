@@ -14,6 +14,15 @@ typedef struct {
   extern const dc_cli_command dc_cli_cmd_##law; \
   const dc_cli_command dc_cli_cmd_##law = {#law, run, summary}
 
+/* The subcommand of a law, NULL if there is none (dclaw.c). */
+const dc_cli_command *dc_cli_find(const char *law);
+
+/* dclaw plot (plot.c): runs law subcommands and draws their tables with
+   python3 and matplotlib (plot.py); argv[0] is "plot". */
+#define DC_CLI_PLOT_USAGE \
+  "plot --png FILE [--y force|area|stiffness|all] [--csv FILE] -- <law> [--key value ...] [-- <law> ...]"
+int dc_cli_plot(int argc, char **argv);
+
 /* Key-value options: --key value. Unknown keys are an error. */
 typedef struct {
   const char *key;     /* without the leading -- */

@@ -1,5 +1,6 @@
 /* dclaw: evaluate a c_core force law for given inputs and print CSV.
-   Usage: dclaw <law> [--key value ...]; dclaw --help lists the laws.
+   Usage: dclaw <law> [--key value ...]; dclaw --help lists the laws;
+   dclaw plot draws laws' tables into a PNG (plot.c).
    Each law's subcommand lives in cli/cmd_<law>.c (DC_CLI_COMMAND); the build
    generates their table, dclaw_commands.h, from those file names. */
 #include "cli.h"
@@ -12,9 +13,17 @@
 /* Prints the usage line and the laws with their summaries. */
 static void usage(FILE *out)
 {
-  fprintf(out, "usage: dclaw <law> [--key value ...]   (dclaw <law> --help for its keys)\nlaws:\n");
+  fprintf(out, "usage: dclaw <law> [--key value ...]   (dclaw <law> --help for its keys)\n"
+               "       dclaw " DC_CLI_PLOT_USAGE "   (dclaw plot --help)\nlaws:\n");
   for (size_t i = 0; i < N_COMMANDS; i++)
     fprintf(out, "  %-16s %s\n", dc_cli_commands[i]->name, dc_cli_commands[i]->summary);
+}
+
+const dc_cli_command *dc_cli_find(const char *law)
+{
+  for (size_t i = 0; i < N_COMMANDS; i++)
+    if (!strcmp(law, dc_cli_commands[i]->name)) return dc_cli_commands[i];
+  return NULL;
 }
 
 int main(int argc, char **argv)
@@ -23,8 +32,9 @@ int main(int argc, char **argv)
     usage(argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
   }
-  for (size_t i = 0; i < N_COMMANDS; i++)
-    if (!strcmp(argv[1], dc_cli_commands[i]->name)) return dc_cli_commands[i]->run(argc - 1, argv + 1);
+  if (!strcmp(argv[1], "plot")) return dc_cli_plot(argc - 1, argv + 1);
+  const dc_cli_command *law = dc_cli_find(argv[1]);
+  if (law) return law->run(argc - 1, argv + 1);
   fprintf(stderr, "dclaw: unknown law '%s'\n", argv[1]);
   usage(stderr);
   return 2;

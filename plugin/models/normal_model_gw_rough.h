@@ -192,6 +192,8 @@ private:
     } else if (gwElliptic && sigma != 0.0) {
       hertzGeometry(reff, reff, g);
     }
+    if (delta > 0.0)   /* the smooth bodies' Hertz semi-axis: a^2 = 2 R_major delta D / K, spheres R delta */
+      checkHertzRange(sidata, sq ? 2.0 * g.R_major * delta * g.D / g.K : reff * delta, sq ? g.R_minor : reff);
     double P, Sn, kn, kt = 0.0;
     if (sigma == 0.0) {
       const double root = dc_hertz_stiffness(Y, g.R_force, delta, &kn, &Sn);

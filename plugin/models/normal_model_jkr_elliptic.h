@@ -152,6 +152,7 @@ private:
       const double root = dc_hertz_stiffness(Y, r_force, delta, &kn, &Sn);
       kt = dc_mindlin_kt_circle(G, r_area == r_force ? root : sqrt(r_area * delta));
       P = kn * delta;
+      checkHertzRange(sidata, sq ? 2.0 * g.R_major * delta * g.D / g.K : R_major * delta, R_minor);
       if (ax) {
         if (!sq) dc_hertz_geometry(R_major, R_major, &g);
         dc_hertz_normal(&g, Y, delta, &c);
@@ -187,6 +188,8 @@ private:
       }
       kn = Sn;
       if (ax) dc_jkr_normal(&s, F_pull, &c);
+      const double a_major = s.b > s.a ? s.b : s.a;
+      checkHertzRange(sidata, a_major * a_major, R_minor);
     }
     applyForce(sidata, P, delta, vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) publish(sidata, c, ax);

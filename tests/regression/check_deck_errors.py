@@ -77,12 +77,13 @@ code3, out3 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range"
 warn = [l for l in out3.splitlines() if "where Hertz theory no longer holds" in l]
 c.true(code3 == 0 and len(warn) >= 1 and "atom 1 with atom 2" in warn[0] and len(set(warn)) == 1,
        "overlap beyond the Hertz range: one warning naming the contact (%s)" % (warn[0].strip() if warn else "none"))
-code4, out4 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range_jamari"),
-                  variables=dict(ok, model="jamari_ep tangential history", props=props("props_hardness"), settings="", x0="0.0007"),
-                  tag="range", expect_error=True)
-warn = [l for l in out4.splitlines() if "where Hertz theory no longer holds" in l]
-c.true(code4 == 0 and len(set(warn)) == 1 and "Normal model jamari_ep" in warn[0],
-       "jamari_ep beyond the Hertz range: one warning (%s)" % (warn[0].strip() if warn else "none"))
+for model, prop in (("jamari_ep", "props_hardness"), ("jkr_elliptic", "props_jkr"), ("gw_rough", "props_rough_reach")):
+    code4, out4 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range_" + model),
+                      variables=dict(ok, model=model + " tangential history", props=props(prop), settings="", x0="0.0007"),
+                      tag="range", expect_error=True)
+    warn = [l for l in out4.splitlines() if "where Hertz theory no longer holds" in l]
+    c.true(code4 == 0 and len(set(warn)) == 1 and "Normal model " + model in warn[0],
+           "%s beyond the Hertz range: one warning (%s)" % (model, warn[0].strip() if warn else "none"))
 # the same base deck with full input runs
 code, out = run("deck_errors/in.sphere_base", os.path.join(work, "good"), variables=dict(ok, model="hertz_elliptic tangential history"), tag="ok", expect_error=True)
 c.true(code == 0, "complete deck runs (exit %d)" % code)
