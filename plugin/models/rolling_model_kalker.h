@@ -30,8 +30,8 @@
    the tangential model acts and this model adds nothing. So the tangential
    model must be one that hands over (cmd_tangential or classical), and the
    normal model one that publishes the contact patch (hertz_elliptic,
-   gw_rough, jkr_elliptic, jamari_ep): else the run stops at set-up. The
-   creep force acts while the surfaces touch (a contact the normal model
+   gw_rough, jkr_elliptic, jamari_ep, classical): else the run stops at
+   set-up. The creep force acts while the surfaces touch (a contact the normal model
    keeps formed apart, jkr_elliptic in tension, gets the tangential model's
    force). No history of its own: steady rolling is assumed (c_core's
    domain statement). */
@@ -86,7 +86,7 @@ public:
     patch.setup(lmp, c);
     if (c->get_history_offset("dc_patch") < 0)
       error->all(FLERR, "Rolling model kalker needs a normal model that publishes the contact patch: "
-                        "model hertz_elliptic, gw_rough, jkr_elliptic or jamari_ep");
+                        "model hertz_elliptic, gw_rough, jkr_elliptic, jamari_ep or classical");
     kin_offset = c->get_history_offset("dc_rolling_kin");
     if (kin_offset < 0)
       error->all(FLERR, "Rolling model kalker needs a tangential model that hands the tangential force over "
