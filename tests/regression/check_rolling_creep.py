@@ -107,8 +107,8 @@ def evaluate(shape, creep, atoms, points):
     extras)."""
     res = []
     for i, j, Ki, Kj, ri, rj, d in contacts(shape, atoms, points):
-        ai = atoms[i]
-        vi, wi = ai[5:8], ai[8:11]
+        bi = atoms[i]
+        vi, wi = bi[5:8], bi[8:11]
         mi = [vi[k] + cross(wi, ri)[k] for k in range(3)]
         if j is None:
             mj, dw = [0.0, 0.0, 0.0], wi
@@ -118,7 +118,7 @@ def evaluate(shape, creep, atoms, points):
             dw = [wi[k] - aj[8 + k] for k in range(3)]
         s = (mi[0] - mj[0], mi[1] - mj[1])
         a, b, Fn, axis = law.patch(Ki, Kj, ESTAR, d)
-        got = {"F": (ai[11], ai[12]), "Fn": ai[13], "tq": ai[14:17]}
+        got = {"F": (bi[11], bi[12]), "Fn": bi[13], "tq": bi[14:17]}
         if j is not None:   # the lower body takes the opposite force
             got["Fj"] = (atoms[j][11], atoms[j][12])
         kin = law.rolling_law(Ki, Kj, s, dw, a, b, axis, Fn, G, MU, creep, TABLE)
