@@ -4,7 +4,9 @@ speed) from the decks: every `pair_style gran` and `fix ... wall/gran` line
 of inputs/, examples/ and tests/bench/, with a ${variable} after a model
 keyword (model, tangential, ...) taken as each model of that kind the deck,
 its check script (tests/regression/check_<case>.py) or the benchmark script
-names. Run by plugin/CMakeLists.txt at configure time.
+names, and after cohesion or rolling_friction also off (decks switch those
+sub-models on and off by a variable). Run by plugin/CMakeLists.txt at
+configure time.
 A deck line naming an unknown model is an error (exit 2).
 Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT"""
 import glob
@@ -32,6 +34,9 @@ def combination(words, where):
     for k, word in enumerate(words[:-1]):
         if word in KINDS:
             kind = KINDS[word]
+            if words[k + 1] == "off" and kind != "SURFACE":
+                got[kind] = kind + "_OFF"
+                continue
             if (kind, words[k + 1]) not in enums:
                 sys.stderr.write("gen_whitelist: %s: unknown %s model '%s'\n" % (where, word, words[k + 1]))
                 sys.exit(2)
@@ -64,6 +69,8 @@ for deck in sorted(decks):
             choices = [w]
             if w.startswith("${") and k > 0 and words[k - 1] in KINDS:
                 choices = named(KINDS[words[k - 1]])
+                if words[k - 1] in ("cohesion", "rolling_friction"):
+                    choices.append("off")
             variants = [v + [c] for v in variants for c in choices]
         for v in variants:
             combo = combination(v, os.path.relpath(deck, ROOT))

@@ -380,14 +380,80 @@ static int curvature_ok(const dc_rolling_curvature *c, const double *n)
   return fabs(dot3(c->d1, c->d1) - 1.0) <= 1e-6 && fabs(dot3(c->d1, n)) <= 1e-6;
 }
 
-/* Kinematics of rolling (review Eqs. 89-91, derived in the header). */
-int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
-                          const dc_rolling_curvature *cj, const double dv[3],
-                          const double dw[3], dc_rolling_kin *k)
+/* No rolling velocity (a relative curvature that is not positive
+   definite): V = 0, the slip and spin as they are. */
+static int still(const double s[3], double spin, dc_rolling_kin *k)
+{
+  if (!finite3(s) || !isfinite(spin)) return DC_ERANGE;
+  k->V = 0.0;
+  k->ex[0] = k->ex[1] = k->ex[2] = 0.0;
+  memcpy(k->slip, s, 3 * sizeof(double));
+  k->spin = spin;
+  return DC_OK;
+}
+
+/* Raises the relative curvature K_i + K_j (components K[0] = uu, K[1] = uv,
+   K[2] = vv on one basis) to at least k_min in every direction, half of the
+   raise on each body (so K_i - K_j is kept). */
+static void raise_relative(double Ki[3], double Kj[3], double k_min)
+{
+  const double T0 = Ki[0] + Kj[0], T1 = Ki[1] + Kj[1], T2 = Ki[2] + Kj[2];
+  const double m = 0.5 * (T0 + T2), h = 0.5 * (T0 - T2), d = hypot(h, T1);
+  const double lo = m - d, hi = m + d;
+  if (!(lo < k_min)) return;
+  if (d == 0.0) {   /* isotropic: raise both directions alike */
+    const double r = 0.5 * (k_min - lo);
+    Ki[0] += r; Ki[2] += r; Kj[0] += r; Kj[2] += r;
+    return;
+  }
+  /* unit eigenvector of lo: (T1, lo - T0) or (lo - T2, T1), the longer one */
+  double x = T1, y = lo - T0;
+  const double x2 = lo - T2, y2 = T1;
+  if (hypot(x2, y2) > hypot(x, y)) { x = x2; y = y2; }
+  const double l = hypot(x, y);
+  x /= l;
+  y /= l;
+  const double r_lo = 0.5 * (k_min - lo), r_hi = hi < k_min ? 0.5 * (k_min - hi) : 0.0;
+  /* r_lo v v^T + r_hi w w^T, w = (-y, x) */
+  const double A0 = r_lo * x * x + r_hi * y * y, A1 = (r_lo - r_hi) * x * y, A2 = r_lo * y * y + r_hi * x * x;
+  Ki[0] += A0; Ki[1] += A1; Ki[2] += A2;
+  Kj[0] += A0; Kj[1] += A1; Kj[2] += A2;
+}
+
+/* Kinematics of rolling (review Eqs. 89-91, derived in the header), with
+   the relative curvature raised to k_min (0: not raised); singular_ok: a
+   relative curvature that is not positive definite gives V = 0 and DC_OK
+   instead of DC_EDOM. */
+static int kinematics(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                      const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
 {
   if (!finite3(n) || !finite3(dv) || !finite3(dw)) return DC_EDOM;
   if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   if (!curvature_ok(ci, n) || !curvature_ok(cj, n)) return DC_EDOM;
+  if (ci->k1 == ci->k2 && cj->k1 == cj->k2) {
+    /* both isotropic (spheres, a sphere on a plane): K_i + K_j = (k_i + k_j) I,
+       no basis needed, the same Vbar */
+    const double ks = ci->k1 + cj->k1;
+    if (ks > 0.0 && isfinite(ks) && ks >= k_min) {
+      const double dvn = dot3(dv, n);
+      double s[3], r[3], u[3];
+      for (int i = 0; i < 3; i++) s[i] = dv[i] - dvn * n[i];
+      cross3(dw, n, r);
+      const double h = 0.5 * (ci->k1 / ks - cj->k1 / ks);
+      for (int i = 0; i < 3; i++) u[i] = r[i] / ks + h * s[i];
+      const double un = dot3(u, n);
+      for (int i = 0; i < 3; i++) u[i] -= un * n[i];
+      double V = sqrt(dot3(u, u));
+      if (!(V > 1e-150 && V < 1e150)) V = hypot(hypot(u[0], u[1]), u[2]);   /* squares out of range */
+      const double spin = dot3(dw, n);
+      if (!isfinite(V) || !finite3(s) || !isfinite(spin)) return DC_ERANGE;
+      k->V = V;
+      for (int i = 0; i < 3; i++) k->ex[i] = V > 0.0 ? u[i] / V : 0.0;
+      memcpy(k->slip, s, sizeof s);
+      k->spin = spin;
+      return DC_OK;
+    }
+  }
   /* a basis of the tangent plane */
   double e1[3], e2[3];
   const double *d = ci->k1 != ci->k2 ? ci->d1 : (cj->k1 != cj->k2 ? cj->d1 : NULL);
@@ -404,16 +470,24 @@ int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
   double Ki[3], Kj[3];
   tensor2(ci, e1, e2, Ki);
   tensor2(cj, e1, e2, Kj);
-  /* scaled by the trace of the sum, so that det is in (0, 1/4] */
-  const double tr = (Ki[0] + Kj[0]) + (Ki[2] + Kj[2]);
-  if (!(tr > 0.0)) return DC_EDOM;
-  if (!isfinite(tr)) return DC_ERANGE;
-  const double S0 = (Ki[0] / tr + Kj[0] / tr), S1 = (Ki[1] / tr + Kj[1] / tr), S2 = (Ki[2] / tr + Kj[2] / tr);
-  const double det = S0 * S2 - S1 * S1;
-  if (!(S0 > 0.0 && S2 > 0.0 && det > 1e-12)) return DC_EDOM;
+  if (k_min > 0.0 && finite3(Ki) && finite3(Kj)) raise_relative(Ki, Kj, k_min);
   const double dvn = dot3(dv, n);
   double s[3];
   for (int i = 0; i < 3; i++) s[i] = dv[i] - dvn * n[i];
+  const double spin = dot3(dw, n);
+  /* scaled by the trace of the sum, so that det is in (0, 1/4] */
+  const double tr = (Ki[0] + Kj[0]) + (Ki[2] + Kj[2]);
+  if (!(tr > 0.0)) {
+    if (!singular_ok || isnan(tr)) return DC_EDOM;
+    return still(s, spin, k);
+  }
+  if (!isfinite(tr)) return DC_ERANGE;
+  const double S0 = (Ki[0] / tr + Kj[0] / tr), S1 = (Ki[1] / tr + Kj[1] / tr), S2 = (Ki[2] / tr + Kj[2] / tr);
+  const double det = S0 * S2 - S1 * S1;
+  if (!(S0 > 0.0 && S2 > 0.0 && det > 1e-12)) {
+    if (!singular_ok) return DC_EDOM;
+    return still(s, spin, k);
+  }
   const double s1 = dot3(s, e1), s2 = dot3(s, e2);
   double r[3];
   cross3(dw, n, r);
@@ -427,13 +501,33 @@ int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
   double ex[3] = {0.0, 0.0, 0.0};
   if (V > 0.0)
     for (int i = 0; i < 3; i++) ex[i] = (u1 / V) * e1[i] + (u2 / V) * e2[i];
-  const double spin = dot3(dw, n);
   if (!isfinite(spin)) return DC_ERANGE;
   k->V = V;
   memcpy(k->ex, ex, sizeof ex);
   memcpy(k->slip, s, sizeof s);
   k->spin = spin;
   return DC_OK;
+}
+
+int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
+                          const dc_rolling_curvature *cj, const double dv[3],
+                          const double dw[3], dc_rolling_kin *k)
+{
+  return kinematics(n, ci, cj, dv, dw, 0.0, 0, k);
+}
+
+int dc_rolling_kinematics_capped(const double n[3], const dc_rolling_curvature *ci,
+                                 const dc_rolling_curvature *cj, const double dv[3],
+                                 const double dw[3], double R_max, dc_rolling_kin *k)
+{
+  if (!(R_max > 0.0)) return DC_EDOM;   /* NaN too; +inf: no cap */
+  return kinematics(n, ci, cj, dv, dw, 1.0 / R_max, 1, k);
+}
+
+int dc_rolling_acts(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k)
+{
+  /* the zero branch of dc_rolling_force, negated */
+  return !(patch->formed == 0.0 || patch->a == 0.0 || k->V <= p->v_min);
 }
 
 /* Unit vector along (x, y1 + y2), whose parts may be infinite (then only

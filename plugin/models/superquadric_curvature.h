@@ -9,6 +9,7 @@
 
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
 
+#include <cmath>
 #include "atom.h"
 #include "contact_interface.h"
 #include "contact_models.h"
@@ -22,7 +23,7 @@ namespace ContactModels {
 
 class SuperquadricCurvature {
 public:
-  SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0) {}
+  SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0), kind_("Normal model") {}
 
   /* Call from postSettings. `model` names the normal model in messages.
      Checks the maxRadiusFactor setting's range on every run. */
@@ -83,6 +84,51 @@ public:
     R_major = 1.0 / (k2 > k_min ? k2 : k_min);
   }
 
+  /* For the rolling kinematics (rolling_contact.h): the history offsets of
+     the bodies' contact points only (the normal model checks the settings
+     and names a missing `surface superquadric`). */
+  void setupPoints(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb)
+  {
+    kind_ = "Rolling model";
+    if (!lmp->atom->superquadric_flag) return;
+    alpha_i_offset_ = cmb->get_history_offset("alpha1_offset");
+    alpha_j_offset_ = cmb->get_history_offset("alpha2_offset");
+  }
+
+  /* Principal curvatures k1 >= k2 of each body's surface at its contact
+     point and the unit k1 direction (in the contact plane), body i in [0],
+     j in [1]; a wall is flat (zero, no direction). */
+  void bodyCurvatures(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &sidata, double k1[2], double k2[2],
+                      double d1[2][3], const char *model)
+  {
+    LAMMPS_NS::Atom *atom = lmp->atom;
+    double u[3], v[3], form[3], pi[3], pj[3];
+    dc_tangent_basis(sidata.en, u, v);
+    if (sidata.is_wall) {
+      const double back = sidata.mesh ? sidata.deltan : 0.0;
+      for (int k = 0; k < 3; k++) pi[k] = sidata.contact_point[k] - back * sidata.en[k];
+    } else {
+      const double ai = sidata.contact_history[alpha_i_offset_];
+      const double aj = sidata.contact_history[alpha_j_offset_];
+      for (int k = 0; k < 3; k++) {
+        pi[k] = sidata.contact_point[k] - ai * sidata.en[k];
+        pj[k] = sidata.contact_point[k] + aj * sidata.en[k];
+      }
+    }
+    for (int b = 0; b < 2; b++) {
+      if (b == 1 && sidata.is_wall) {
+        k1[1] = k2[1] = 0.0;
+        d1[1][0] = d1[1][1] = d1[1][2] = 0.0;
+        break;
+      }
+      bodyForm(atom, b ? sidata.j : sidata.i, b ? pj : pi, u, v, form, lmp, model);
+      double theta;
+      dc_form_principal(form, &k1[b], &k2[b], &theta);
+      const double c = cos(theta), s = sin(theta);
+      for (int k = 0; k < 3; k++) d1[b][k] = c * u[k] + s * v[k];
+    }
+  }
+
 private:
   void bodyForm(LAMMPS_NS::Atom *atom, int i, const double *p, const double *u, const double *v,
                 double *form, LAMMPS_NS::LAMMPS *lmp, const char *model)
@@ -106,13 +152,14 @@ private:
     sq.shape_function_props_local(pl, &f, g, H);
     if (dc_curvature_form(g, H, ul, vl, form) != 0) {
       char msg[256];
-      snprintf(msg, sizeof msg, "Normal model %s: degenerate curvature at the contact point of atom %d (shape-function gradient zero or not finite)", model, (int)atom->tag[i]);
+      snprintf(msg, sizeof msg, "%s %s: degenerate curvature at the contact point of atom %d (shape-function gradient zero or not finite)", kind_, model, (int)atom->tag[i]);
       lmp->error->one(FLERR, msg);
     }
   }
 
   int alpha_i_offset_, alpha_j_offset_;
   double max_radius_factor_;
+  const char *kind_;   /* "Normal model" or "Rolling model", in messages */
 };
 
 }

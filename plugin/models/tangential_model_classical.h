@@ -22,7 +22,10 @@
      tangentialViscoelasticTime [s] (zheng).
    The contact patch (semi-axes, friction load) comes from the normal model
    (contact_patch.h). The normal model's tangential_damping does not apply:
-   damping is the law's own. */
+   damping is the law's own. With `rolling_friction kalker` it hands the
+   tangential force over while the contact rolls (rolling_contact.h): it
+   applies nothing then and its spring starts afresh when the contact
+   stops rolling. */
 #ifdef TANGENTIAL_MODEL
 TANGENTIAL_MODEL(TANGENTIAL_CLASSICAL,classical,@DC_MODEL_ID@)
 #else
@@ -38,6 +41,7 @@ TANGENTIAL_MODEL(TANGENTIAL_CLASSICAL,classical,@DC_MODEL_ID@)
 #include "contact_patch.h"
 #include "error.h"
 #include "global_properties.h"
+#include "rolling_contact.h"
 #include "tangential_model_base.h"
 #include "update.h"
 #include "dc/classical_tangential.h"
@@ -56,6 +60,7 @@ public:
     damping(DC_CT_DAMP_NONE), history_offset(-1), ntypes(0)
   {
     patch.request(c);
+    handover.attach(c);
   }
 
   void registerSettings(Settings &settings)
@@ -73,12 +78,14 @@ public:
     static const char *const damps[] = {"none", "given", "restitution", "normal"};
     static const int damp_ids[] = {DC_CT_DAMP_NONE, DC_CT_DAMP_GIVEN, DC_CT_DAMP_RESTITUTION, DC_CT_DAMP_NORMAL};
     settings.registerChoice("classicalTangentialDamping", damping, damps, damp_ids, 4, "none");
+    handover.registerSettings(settings);
   }
 
   /* The spring (3 values), and the reversal force of incremental (3 more). */
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
+    handover.setup(lmp, hsetup);
     for (int k = 0; k < nfields(); k++) {
       const int off = hsetup->add_history_value(dc_classical_tangential_history[k].name,
                                                 dc_classical_tangential_history[k].flips ? "1" : "0");
@@ -135,6 +142,11 @@ public:
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     dc_patch p;
     patch.read(sidata, p);
+    if (handover.active() && handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
+      if (sidata.computeflag && sidata.shearupdate)
+        memset(&sidata.contact_history[history_offset], 0, nfields() * sizeof(double));
+      return;
+    }
     const double vt[3] = {sidata.vtr1, sidata.vtr2, sidata.vtr3};
     const dc_classical_tangential_contact c = {sidata.meff, sidata.kn, sidata.gamman};
     dc_classical_tangential_state *h =
@@ -202,6 +214,7 @@ private:
   int history_offset, ntypes;
   std::vector<dc_classical_tangential> models;
   ContactPatchReader patch;
+  RollingHandover handover;
 };
 
 }

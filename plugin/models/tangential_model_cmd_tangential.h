@@ -17,7 +17,10 @@
    The force acts while the normal model says the contact is formed: for
    jkr_elliptic also in tension, bounded by mu (F + 2 F_pulloff). The
    normal model's tangential_damping does not apply: dissipation is the
-   law's own (slip, and cmdDissipation). */
+   law's own (slip, and cmdDissipation). With `rolling_friction kalker` it
+   hands the tangential force over while the contact rolls
+   (rolling_contact.h): it applies nothing then and its history starts
+   afresh when the contact stops rolling. */
 #ifdef TANGENTIAL_MODEL
 TANGENTIAL_MODEL(TANGENTIAL_CMD,cmd_tangential,@DC_MODEL_ID@)
 #else
@@ -32,6 +35,7 @@ TANGENTIAL_MODEL(TANGENTIAL_CMD,cmd_tangential,@DC_MODEL_ID@)
 #include "contact_models.h"
 #include "contact_patch.h"
 #include "error.h"
+#include "rolling_contact.h"
 #include "global_properties.h"
 #include "neighbor.h"
 #include "tangential_model_base.h"
@@ -53,12 +57,14 @@ public:
     history_offset(-1), ntypes(0)
   {
     patch.request(c);
+    handover.attach(c);
   }
 
   void registerSettings(Settings &settings)
   {
     settings.registerOnOff("cmdTwisting", twisting, false);
     settings.registerOnOff("cmdDissipation", dissipation, false);
+    handover.registerSettings(settings);
   }
 
   /* The law's history, without the twist profile unless cmdTwisting is on
@@ -69,6 +75,7 @@ public:
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
+    handover.setup(lmp, hsetup);
     const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
     const int need = neighbor->oneatom * (nfields + 40);
     if (neighbor->pgsize < need) neighbor->pgsize = need;
@@ -118,6 +125,15 @@ public:
   inline void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
+    if (handover.active()) {
+      dc_patch p;
+      patch.read(sidata, p);
+      if (handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
+        if (sidata.computeflag && sidata.shearupdate)
+          memset(state(sidata), 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
+        return;
+      }
+    }
     const double vtr[3] = {sidata.vtr1, sidata.vtr2, sidata.vtr3};
     step(sidata, vtr, sidata.cri, sidata.crj, i_forces, j_forces);
   }
@@ -216,6 +232,7 @@ private:
   std::vector<dc_cmd_params> params;
   std::vector<dc_mindlin_pair> pairs;
   ContactPatchReader patch;
+  RollingHandover handover;
 };
 
 }

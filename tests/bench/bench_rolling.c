@@ -53,6 +53,30 @@ static double time_force(const dc_rolling_params *p, const dc_rolling_material *
   return best;
 }
 
+/* best of 5, ns per call of the kinematics of one body on another (R_max
+   < 0: dc_rolling_kinematics, else the capped form) */
+static double time_kinematics(const dc_rolling_curvature *ci, const dc_rolling_curvature *cj, double R_max)
+{
+  const double n[3] = {0.0, 0.0, 1.0};
+  double best = 1e30;
+  for (int r = 0; r < 5; r++) {
+    double acc = 0.0;
+    const double t0 = now();
+    for (int rep = 0; rep < 50; rep++)
+      for (int i = 0; i < N; i++) {
+        const double dv[3] = {kins[i].slip[0], kins[i].slip[1], 0.0}, dw[3] = {0.1, kins[i].V * 30.0, kins[i].spin};
+        dc_rolling_kin k;
+        const int st = R_max < 0.0 ? dc_rolling_kinematics(n, ci, cj, dv, dw, &k)
+                                   : dc_rolling_kinematics_capped(n, ci, cj, dv, dw, R_max, &k);
+        if (st == DC_OK) acc += k.V;
+      }
+    const double t = (now() - t0) / (50.0 * N) * 1e9;
+    sink = acc;
+    if (t < best) best = t;
+  }
+  return best;
+}
+
 int main(void)
 {
   unsigned long long s = 99;
@@ -96,23 +120,15 @@ int main(void)
   printf("dc_kalker_coefficients (a/b in [0.1, 10]): %.1f ns per call\n", best);
 
   /* kinematics */
-  const double n[3] = {0.0, 0.0, 1.0};
   const dc_rolling_curvature ci = {50.0, 20.0, {0.6, 0.8, 0.0}}, cj = {0.0, 0.0, {0, 0, 0}};
-  best = 1e30;
-  for (int r = 0; r < 5; r++) {
-    double acc = 0.0;
-    const double t0 = now();
-    for (int rep = 0; rep < 50; rep++)
-      for (int i = 0; i < N; i++) {
-        const double dv[3] = {kins[i].slip[0], kins[i].slip[1], 0.0}, dw[3] = {0.1, kins[i].V * 30.0, kins[i].spin};
-        dc_rolling_kin k;
-        if (dc_rolling_kinematics(n, &ci, &cj, dv, dw, &k) == DC_OK) acc += k.V;
-      }
-    const double t = (now() - t0) / (50.0 * N) * 1e9;
-    sink = acc;
-    if (t < best) best = t;
-  }
-  printf("dc_rolling_kinematics (ellipsoid on a plane): %.1f ns per call\n", best);
+  const dc_rolling_curvature si = {1000.0, 1000.0, {0, 0, 0}}, sj = {500.0, 500.0, {0, 0, 0}};
+  const dc_rolling_curvature fi = {50.0, 0.0, {0.6, 0.8, 0.0}};
+  printf("dc_rolling_kinematics (ellipsoid on a plane):                   %5.1f ns per call\n",
+         time_kinematics(&ci, &cj, -1.0));
+  printf("dc_rolling_kinematics_capped, no cap (spheres, the LIGGGHTS path): %5.1f ns per call\n",
+         time_kinematics(&si, &sj, INFINITY));
+  printf("dc_rolling_kinematics_capped, flat direction capped (superquadric face): %5.1f ns per call\n",
+         time_kinematics(&fi, &cj, 0.1));
 
   /* error of the series against the generator's held-out points */
   FILE *f = fopen(DC_REFERENCE_DIR "/kalker.csv", "r");

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Whole-run (loop) time of the same scene with stock `hertz` and with
 # `hertz_elliptic`, for spheres and superquadrics, `gw_rough` and
-# `jkr_elliptic` on the sphere packing, and the superquadric packing on 1
-# and 2 MPI ranks. All runs in one invocation; the configurations run
+# `jkr_elliptic` on the sphere packing, the superquadric packing on 1
+# and 2 MPI ranks, and a rolling scene with and without `rolling_friction
+# kalker`. All runs in one invocation; the configurations run
 # round-robin REPS times (so that a slow spell of the machine hits all of
 # them alike) and the fastest run of each is kept. Prints figures, asserts
 # nothing. Usage: bash tests/bench/bench_scenes.sh [REPS]
@@ -21,6 +22,7 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 sph="$root/tests/bench/in.sphere_packing"
 sq="$root/inputs/superquadric_packing/in.superquadric_packing"
+roll="$root/tests/bench/in.rolling_scene"
 # name | deck | model | steps | ranks | extra -var pairs
 configs=(
   "sh|$sph|hertz|10000|1|"
@@ -45,6 +47,13 @@ configs=(
   "qh|$sq|hertz|15000|1|"
   "qe|$sq|hertz_elliptic|15000|1|"
   "q2|$sq|hertz_elliptic|15000|2|"
+  # rolling: spheres rolling down an incline, hertz_elliptic + cmd_tangential
+  # without and with rolling_friction kalker, and kalker with nothing rolling
+  # (rollingVelocityMin 1e3: cmd_tangential acts everywhere, the hand-over's
+  # kinematics are computed all the same)
+  "rt|$roll|hertz_elliptic|20000|1|-var rmodel off"
+  "rk|$roll|hertz_elliptic|20000|1|-var rmodel kalker"
+  "rk0|$roll|hertz_elliptic|20000|1|-var rmodel kalker -var rkey rollingVelocityMin -var rval 1e3"
 )
 base=${DC_BENCH_BASELINE:-}
 declare -A best
@@ -93,6 +102,10 @@ row(lambda sth, st: "2888 spheres (jittered), hertz: tangential history %.3f s, 
     % (sth, st, st / sth), "sth", "st")
 row(lambda qe, qt: "324 superquadrics, hertz_elliptic: tangential history %.3f s, cmd_tangential %.3f s = %.4f x"
     % (qe, qt, qt / qe), "qe", "qt")
+row(lambda rt, rk: "1568 spheres rolling down a 15 degree incline, hertz_elliptic + cmd_tangential: no rolling model "
+    "%.3f s, rolling_friction kalker %.3f s = %.4f x" % (rt, rk, rk / rt), "rt", "rk")
+row(lambda rt, rk0: "    kalker with nothing rolling (rollingVelocityMin 1e3: cmd_tangential everywhere, plus the "
+    "hand-over's kinematics) %.3f s = %.4f x" % (rk0, rk0 / rt), "rt", "rk0")
 PY
 if [ -n "$base" ]; then
   echo

@@ -2,9 +2,12 @@
 """Bad deck input ends the run with an error that names the cause (never a
 crash or a silent NaN): unknown model, missing material property, a setting
 outside its range, a missing property for an option, a setting the model
-does not take, superquadrics without `surface superquadric`; and the stock
-failures the project's patches and decks turn into messages: a particle that
-leaves the box (thermo_modify lost error), coincident spheres, a
+does not take, superquadrics without `surface superquadric`, the rolling
+model `kalker` without its property, with a setting out of range, under a
+normal model that publishes no contact patch or with a tangential model
+that does not hand over; and the stock failures the project's patches and
+decks turn into messages: a particle that leaves the box (thermo_modify
+lost error), coincident spheres, a
 sphere centre on a wall, a position that is not a number, youngsModulus <= 0 with
 soft_particles, a property value that is not a finite number, write_data
 with superquadrics (read back) and with contact history (a warning); a
@@ -38,6 +41,12 @@ cases = [
     ("NaN position", "in.sphere_wall", {"props": props("props_full"), "fx": "v_nan"}, "Atom 1 has a non-finite position"),
     ("youngsModulus 0 with soft_particles", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_soft_zero")), "youngsModulus for type 1 is 0: it must be > 0"),
     ("youngsModulus 1e999", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", props=props("props_inf")), "Fix property/global youngsModulus: value 1 is '1e999', not a finite number"),
+    ("rolling kalker without coefficientFriction", "in.sphere_base", dict(ok, model="hertz_elliptic tangential classical rolling_friction kalker classicalTangential viscous", props=props("props_no_friction"), settings=""), "coefficientFriction as requested by rolling_model kalker"),
+    ("rolling kalker: coefficientFriction < 0", "in.sphere_base", dict(ok, model="hertz_elliptic tangential classical rolling_friction kalker classicalTangential viscous", props=props("props_negative_friction"), settings=""), "Rolling model kalker: coefficientFriction = -0.5 for types 1 and 1 is outside [0, inf)"),
+    ("rollingVelocityMin 0", "in.sphere_base", dict(ok, model="hertz_elliptic tangential cmd_tangential rolling_friction kalker", settings="rollingVelocityMin 0"), "Rolling model kalker: rollingVelocityMin = 0 m/s is outside (0, inf)"),
+    ("unknown rollingCreepModel", "in.sphere_base", dict(ok, model="hertz_elliptic tangential cmd_tangential rolling_friction kalker", settings="rollingCreepModel linear"), "unknown option or wrong keyword order: 'linear' (options: kalker vermeulenJohnson)"),
+    ("rolling kalker under a stock normal model", "in.sphere_base", dict(ok, model="hertz tangential history rolling_friction kalker", settings=""), "Rolling model kalker needs a normal model that publishes the contact patch"),
+    ("rolling kalker with a tangential model that does not hand over", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history rolling_friction kalker", settings=""), "Rolling model kalker needs a tangential model that hands the tangential force over while the contact rolls: tangential cmd_tangential or tangential classical"),
     ("tiny youngsModulus with soft_particles (jkr_elliptic)", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_soft_tiny"), settings="tangential_damping on", x0="0.00099"), "too small a youngsModulus (E* = 5.49451e-301 for types 1 and 1)"),
 ]
 for k, (name, deck, variables, message) in enumerate(cases):

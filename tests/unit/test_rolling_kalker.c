@@ -330,6 +330,161 @@ static void test_kinematics(void)
 }
 
 /* ------------------------------------------------------------------ */
+/* The capped kinematics (the wrappers'): no cap (R_max = inf) is the plain
+   kinematics bit for bit; a cap above both radii changes nothing; a flat
+   contact gets the capped radius; the raise keeps K_i - K_j; flat on flat
+   without a cap has no rolling velocity (V = 0, DC_OK); i and j swapped. */
+static void test_capped(void)
+{
+  const double n[3] = {0.0, 0.0, 1.0};
+  dc_rolling_curvature sph = {0.5, 0.5, {0, 0, 0}}, flat = {0.0, 0.0, {0, 0, 0}};
+  dc_rolling_kin k, kc;
+  unsigned long long seed = 4242;
+  int same = 1;
+  for (int it = 0; it < 2000; it++) {
+    dc_rolling_curvature ci = {0.1 + 3 * check_uniform(&seed), 0.1 + 3 * check_uniform(&seed), {1.0, 0.0, 0.0}};
+    const double th = 6.283 * check_uniform(&seed);
+    dc_rolling_curvature cj = {2 * check_uniform(&seed), 2 * check_uniform(&seed), {cos(th), sin(th), 0.0}};
+    double v[3], w[3];
+    for (int i = 0; i < 3; i++) { v[i] = check_uniform(&seed) - 0.5; w[i] = 4 * (check_uniform(&seed) - 0.5); }
+    CHECK(dc_rolling_kinematics(n, &ci, &cj, v, w, &k) == DC_OK);
+    CHECK(dc_rolling_kinematics_capped(n, &ci, &cj, v, w, INFINITY, &kc) == DC_OK);
+    same = same && !memcmp(&k, &kc, sizeof k);
+    /* a cap at 20 (curvature 0.05, below every eigenvalue >= 0.1): no change */
+    CHECK(dc_rolling_kinematics_capped(n, &ci, &cj, v, w, 20.0, &kc) == DC_OK);
+    same = same && !memcmp(&k, &kc, sizeof k);
+  }
+  CHECK(same);
+  /* a flat body turning on a flat wall: K = 1/R_max, Vbar = R_max (dw x n) */
+  const double Rm = 7.0, dw[3] = {0.0, 0.3, 0.0}, dv0[3] = {0.0, 0.0, 0.0};
+  CHECK(dc_rolling_kinematics_capped(n, &flat, &flat, dv0, dw, Rm, &k) == DC_OK);
+  CHECK_REL(k.V, 0.3 * Rm, 1e-15, "flat on flat, capped: V = R_max |dw x n|");
+  CHECK_REL(k.ex[0], 1.0, 1e-15, "flat on flat, capped: along dw x n");
+  /* without a cap: no rolling velocity, slip and spin kept */
+  const double dv1[3] = {0.2, -0.1, 0.05}, dw1[3] = {0.1, 0.2, 0.4};
+  CHECK(dc_rolling_kinematics_capped(n, &flat, &flat, dv1, dw1, INFINITY, &k) == DC_OK);
+  CHECK(k.V == 0.0 && k.ex[0] == 0.0 && k.ex[1] == 0.0 && k.ex[2] == 0.0);
+  CHECK(k.slip[0] == 0.2 && k.slip[1] == -0.1 && k.slip[2] == 0.0 && k.spin == 0.4);
+  CHECK(dc_rolling_kinematics(n, &flat, &flat, dv1, dw1, &k) == DC_EDOM);
+  /* a cylinder (axis y: k along x 1/R, along y 0) rolling along x on a
+     plane, capped at Rm: the flat direction gets 1/Rm, the rolling one is
+     untouched: Vbar_x = R wy + s_x/2, Vbar_y = -Rm wx */
+  const double R = 2.0;
+  dc_rolling_curvature cyl = {1.0 / R, 0.0, {1.0, 0.0, 0.0}};
+  const double dvc[3] = {0.01, 0.0, 0.0}, dwc[3] = {-0.02, 0.5, 0.0};
+  CHECK(dc_rolling_kinematics_capped(n, &cyl, &flat, dvc, dwc, Rm, &k) == DC_OK);
+  /* K_i' = diag(1/R, 1/(2Rm)), K_j' = diag(0, 1/(2Rm)): u solves (K_i'+K_j') Vbar = dw x n + (K_i' - K_j') s/2 */
+  const double Vx = R * (0.5 + (1.0 / R) * 0.01 / 2.0), Vy = Rm * (0.02);
+  CHECK_REL(k.V, hypot(Vx, Vy), 1e-14, "cylinder capped across its axis");
+  CHECK_REL(k.ex[0] * k.V, Vx, 1e-14, "cylinder: Vbar_x = R wy + s_x/2");
+  CHECK_REL(k.ex[1] * k.V, Vy, 1e-14, "cylinder: Vbar_y = -R_max wx");
+  /* the raise keeps K_i - K_j: a slip without turning on a capped flat
+     pair gives Vbar = 0 (K_i' = K_j'), on a sphere and a plane s/2 */
+  CHECK(dc_rolling_kinematics_capped(n, &flat, &flat, dv1, dv0, Rm, &k) == DC_OK);
+  CHECK(k.V == 0.0);
+  CHECK(dc_rolling_kinematics_capped(n, &sph, &flat, dv1, dv0, 1e3, &k) == DC_OK);
+  CHECK_REL(k.V, 0.5 * hypot(0.2, 0.1), 1e-15, "sphere sliding on a plane: V = |s|/2");
+  /* an oblique flat direction (turned cylinder) and i, j swapped: same Vbar */
+  const double c30 = cos(0.5), s30 = sin(0.5);
+  dc_rolling_curvature cylt = {1.0 / R, 0.0, {c30, s30, 0.0}}, cyl2 = {0.3, 0.1, {-s30, c30, 0.0}};
+  const double ni[3] = {0.0, 0.0, -1.0}, dvr[3] = {-0.01, 0.02, 0.0}, dwr[3] = {0.02, -0.5, -0.1};
+  const double dvf[3] = {0.01, -0.02, 0.0}, dwf[3] = {-0.02, 0.5, 0.1};
+  dc_rolling_kin k2;
+  CHECK(dc_rolling_kinematics_capped(n, &cylt, &cyl2, dvf, dwf, 50.0, &k) == DC_OK);
+  CHECK(dc_rolling_kinematics_capped(ni, &cyl2, &cylt, dvr, dwr, 50.0, &k2) == DC_OK);
+  CHECK_REL(k2.V, k.V, 1e-14, "capped, swapped: same V");
+  CHECK(fabs(k2.ex[0] - k.ex[0]) < 1e-14 && fabs(k2.ex[1] - k.ex[1]) < 1e-14);
+  CHECK(fabs(k2.slip[0] + k.slip[0]) < 1e-16 && k2.spin == k.spin);
+  /* both eigenvalues of K_i + K_j (<= 0.07) below 1/R_max = 0.25: both
+     raised, K_i' + K_j' = I / R_max and K_i' - K_j' = K_i - K_j, so
+     Vbar = R_max [dw x n + (K_i - K_j) s / 2] (n = z: dw x n = (wy, -wx)) */
+  const double Rc = 4.0;
+  dc_rolling_curvature a1 = {0.05, 0.01, {c30, s30, 0.0}}, a2 = {0.02, 0.0, {1.0, 0.0, 0.0}};
+  CHECK(dc_rolling_kinematics_capped(n, &a1, &a2, dvf, dwf, Rc, &k) == DC_OK);
+  double D[3] = {0.0, 0.0, 0.0};   /* K_i - K_j: xx, xy, yy */
+  const dc_rolling_curvature *cs[2] = {&a1, &a2};
+  for (int b = 0; b < 2; b++) {
+    const double cx = cs[b]->d1[0], cy = cs[b]->d1[1], d = cs[b]->k1 - cs[b]->k2, sg = b ? -1.0 : 1.0;
+    D[0] += sg * (cs[b]->k2 + d * cx * cx);
+    D[1] += sg * d * cx * cy;
+    D[2] += sg * (cs[b]->k2 + d * cy * cy);
+  }
+  const double want_x = Rc * (dwf[1] + 0.5 * (D[0] * k.slip[0] + D[1] * k.slip[1]));
+  const double want_y = Rc * (-dwf[0] + 0.5 * (D[1] * k.slip[0] + D[2] * k.slip[1]));
+  CHECK_REL(k.V * k.ex[0], want_x, 1e-13, "both directions raised: Vbar_x = R_max [dw x n + (K_i - K_j) s/2]_x");
+  CHECK_REL(k.V * k.ex[1], want_y, 1e-13, "both directions raised: Vbar_y");
+  /* domain */
+  CHECK(dc_rolling_kinematics_capped(n, &sph, &flat, dv1, dw1, 0.0, &k) == DC_EDOM);
+  CHECK(dc_rolling_kinematics_capped(n, &sph, &flat, dv1, dw1, -1.0, &k) == DC_EDOM);
+  CHECK(dc_rolling_kinematics_capped(n, &sph, &flat, dv1, dw1, NAN, &k) == DC_EDOM);
+  const double nb[3] = {0.0, 0.0, 1.1}, dvn[3] = {NAN, 0.0, 0.0};
+  CHECK(dc_rolling_kinematics_capped(nb, &sph, &flat, dv1, dw1, 1.0, &k) == DC_EDOM);
+  CHECK(dc_rolling_kinematics_capped(n, &sph, &flat, dvn, dw1, 1.0, &k) == DC_EDOM);
+  /* isotropic bodies (the spheres' path): Vbar = [dw x n + (k_i - k_j) s/2] / (k_i + k_j),
+     against the general path of a barely anisotropic body (k2 (1 + 1e-12)) */
+  double worst_iso = 0.0, worst_gen = 0.0;
+  for (int it = 0; it < 2000; it++) {
+    double nn[3] = {check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5};
+    const double ln = sqrt(dot3(nn, nn));
+    for (int i = 0; i < 3; i++) nn[i] /= ln;
+    double t[3] = {0.3, 1.0, -0.2}, d1[3];
+    cross3(nn, t, d1);
+    const double l1 = sqrt(dot3(d1, d1));
+    for (int i = 0; i < 3; i++) d1[i] /= l1;
+    const double ki = 0.1 + 3 * check_uniform(&seed), kj = it % 3 == 0 ? 0.0 : 2 * check_uniform(&seed);
+    dc_rolling_curvature ci = {ki, ki, {0, 0, 0}}, cj = {kj, kj, {0, 0, 0}};
+    dc_rolling_curvature ca = {ki * (1 + 1e-12), ki, {d1[0], d1[1], d1[2]}};
+    double v[3], w[3];
+    for (int i = 0; i < 3; i++) { v[i] = check_uniform(&seed) - 0.5; w[i] = 4 * (check_uniform(&seed) - 0.5); }
+    dc_rolling_kin ka;
+    CHECK(dc_rolling_kinematics(nn, &ci, &cj, v, w, &k) == DC_OK);
+    CHECK(dc_rolling_kinematics(nn, &ca, &cj, v, w, &ka) == DC_OK);
+    double r[3], want[3], s[3];
+    cross3(w, nn, r);
+    const double vn = dot3(v, nn);
+    for (int i = 0; i < 3; i++) {
+      s[i] = v[i] - vn * nn[i];
+      want[i] = (r[i] + (ki - kj) * s[i] / 2) / (ki + kj);
+    }
+    for (int i = 0; i < 3; i++) {
+      worst_iso = fmax(worst_iso, fabs(k.V * k.ex[i] - want[i]) / sqrt(dot3(want, want)));
+      worst_gen = fmax(worst_gen, fabs(k.V * k.ex[i] - ka.V * ka.ex[i]) / ka.V);
+    }
+    CHECK(fabs(dot3(k.ex, nn)) < 1e-15 && k.spin == dot3(w, nn));
+  }
+  CHECK(worst_iso < 1e-14 && worst_gen < 1e-10);
+  printf("isotropic bodies: Vbar against its closed form to %.1e, against the general path of k2 (1 + 1e-12) to %.1e "
+         "(2000 contacts)\n", worst_iso, worst_gen);
+  printf("capped kinematics: R_max = inf and a cap above the radii equal the plain kinematics bit for bit (4000 contacts)\n");
+}
+
+/* ------------------------------------------------------------------ */
+/* dc_rolling_acts agrees with dc_rolling_force's rolling flag. */
+static void test_acts(void)
+{
+  const double n[3] = {0.0, 0.0, 1.0};
+  dc_rolling_material rm = mat(0.25);
+  unsigned long long seed = 99;
+  long agree = 0, total = 0;
+  for (int it = 0; it < 20000; it++) {
+    dc_rolling_params p = {0.4, it % 3 == 0 ? 1e-3 : 0.1 * check_uniform(&seed), it % 2};
+    const double a = check_uniform(&seed) < 0.1 ? 0.0 : 1e-3 * check_uniform(&seed) + 1e-6;
+    dc_patch pa = {a, a * (0.2 + 0.8 * check_uniform(&seed)), {1.0, 0.0, 0.0}, 1.0, 1.0,
+                   check_uniform(&seed) < 0.1 ? 0.0 : 1.0};
+    const double r = check_uniform(&seed);
+    const double V = r < 0.1 ? 0.0 : r < 0.2 ? p.v_min : 0.2 * check_uniform(&seed);
+    dc_rolling_kin k = kin_of(V, 1e-3 * (check_uniform(&seed) - 0.5), 1e-3 * (check_uniform(&seed) - 0.5), 10.0 * check_uniform(&seed));
+    if (V == 0.0) k.ex[0] = 0.0;
+    dc_rolling_out o;
+    CHECK(dc_rolling_force(&p, &rm, &pa, n, &k, &o) == DC_OK);
+    total++;
+    if (dc_rolling_acts(&p, &pa, &k) == o.rolling) agree++;
+  }
+  CHECK(agree == total);
+  printf("dc_rolling_acts equals the force law's rolling flag in %ld of %ld contacts\n", agree, total);
+}
+
+/* ------------------------------------------------------------------ */
 static void test_forces(void)
 {
   const double n[3] = {0.0, 0.0, 1.0}, axis_x[3] = {1.0, 0.0, 0.0}, axis_y[3] = {0.0, 1.0, 0.0};
@@ -542,6 +697,15 @@ static void test_sweep(void)
     dc_rolling_kin k, k0;
     memset(&k, 0x5a, sizeof k);
     k0 = k;
+    {
+      /* the capped kinematics: the same promises */
+      dc_rolling_kin kc, kc0;
+      memset(&kc, 0x5a, sizeof kc);
+      kc0 = kc;
+      const int sc = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, check_uniform(&s) < 0.2 ? INFINITY : pick(&s, 10.0), &kc);
+      if (sc != DC_OK && memcmp(&kc, &kc0, sizeof kc)) bad++;
+      if (sc == DC_OK && !(isfinite(kc.V) && kc.V >= 0.0 && isfinite(kc.spin) && finite3(kc.ex) && finite3(kc.slip))) bad++;
+    }
     int st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &k);
     if (st != DC_OK) {
       if (memcmp(&k, &k0, sizeof k)) bad++;
@@ -600,6 +764,8 @@ static void test_params(void)
 
 int main(void)
 {
+  test_capped();
+  test_acts();
   test_table();
   test_far();
   test_published();

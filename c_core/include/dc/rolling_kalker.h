@@ -205,6 +205,22 @@ int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
                           const dc_rolling_curvature *cj, const double dv[3],
                           const double dw[3], dc_rolling_kin *k);
 
+/* As dc_rolling_kinematics, with each relative principal radius capped at
+   R_max [m] (R_max in (0, inf], inf: no cap), as the normal models cap
+   them (maxRadiusFactor times the effective radius): where K_i + K_j is
+   below 1/R_max along a principal direction it is raised to 1/R_max there,
+   half of the raise added to each body, so that K_i - K_j (the slip term)
+   is kept. A relative curvature that is still not positive definite (flat
+   on flat with R_max = inf, a line contact, concave input; the test of
+   dc_rolling_kinematics) has no rolling velocity: V = 0, ex = 0, slip and
+   spin as defined, DC_OK, so that the contact is not rolling (the
+   tangential law acts). The other domain errors as dc_rolling_kinematics;
+   DC_EDOM for R_max <= 0 or NaN. For the LIGGGHTS wrappers, whose
+   superquadric faces may be flat. */
+int dc_rolling_kinematics_capped(const double n[3], const dc_rolling_curvature *ci,
+                                 const dc_rolling_curvature *cj, const double dv[3],
+                                 const double dw[3], double R_max, dc_rolling_kin *k);
+
 /* Output of the force law. */
 typedef struct {
   double F[3];                  /* creep force on body i [N] (on j: -F) */
@@ -227,6 +243,14 @@ typedef struct {
 int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
                      const dc_patch *patch, const double n[3], const dc_rolling_kin *k,
                      dc_rolling_out *out);
+
+/* The hand-over rule (zero rolling speed, above): 1 when dc_rolling_force
+   acts on this contact (rolling = 1: patch formed, a > 0, V > v_min), 0
+   when the contact's tangential law acts instead. For a wrapper whose
+   tangential law runs before the rolling law and must know which of the
+   two acts. Reads p->v_min, patch->formed, patch->a and k->V only; no
+   domain check (dc_rolling_force makes them). */
+int dc_rolling_acts(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k);
 
 #ifdef __cplusplus
 }

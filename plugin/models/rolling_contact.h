@@ -1,0 +1,223 @@
+/* Rolling contact plumbing shared by the rolling model `kalker`
+   (rolling_model_kalker.h) and the tangential models that hand the
+   tangential force over to it (cmd_tangential, classical): the rolling
+   kinematics of a contact from LIGGGHTS data, handed to c_core
+   (dc/rolling_kalker.h: dc_rolling_kinematics_capped, dc_rolling_acts).
+
+   Who owns the tangential force. While a contact rolls (rolling speed V
+   above the setting rollingVelocityMin, patch formed), the rolling model
+   applies Kalker's creep force and spin moment and the tangential model
+   applies nothing and releases its history (spring, load memory): when
+   the contact stops rolling, the tangential model starts afresh. At
+   V <= rollingVelocityMin the tangential model acts and the rolling model
+   adds nothing (c_core's rule at zero rolling speed: creepage = slip / V
+   is never formed there).
+
+   Order. LIGGGHTS calls a contact's tangential model before its rolling
+   model, so the decision is made in the tangential model's call: the
+   rolling model announces itself in its constructor (history-offset name
+   "dc_rolling_model"); a tangential model holding a RollingHandover then
+   stores, per contact and step, the kinematics and the decision in
+   history values found by the name "dc_rolling_kin" (V, ex, slip, spin,
+   acts), which the rolling model reads in the same step. A tangential
+   model without a RollingHandover (stock history, no_history, off) gives
+   the rolling model no "dc_rolling_kin": it stops the run at set-up.
+
+   Kinematics. Body i is the particle, j the other particle or the wall;
+   n = en (from j to i). Spheres: curvature 1/r of each sphere (a wall:
+   flat), material velocities at the contact point with LIGGGHTS' lever
+   arms cri, crj (those its tangential models use). Superquadrics: each
+   surface's principal curvatures and directions at its contact point
+   (shape-function gradient and Hessian, superquadric_curvature.h), the
+   material velocities at sidata.contact_point, the relative radii capped
+   at maxRadiusFactor times the effective radius as the normal models
+   cap them. A wall moves with LIGGGHTS' wall velocity and does not turn
+   (a rotating mesh's spin is not seen). Data plumbing only. */
+#ifndef DC_PLUGIN_ROLLING_CONTACT_H
+#define DC_PLUGIN_ROLLING_CONTACT_H
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include "atom.h"
+#include "contact_interface.h"
+#include "contact_models.h"
+#include "error.h"
+#include "settings.h"
+#include "superquadric_curvature.h"
+#include "dc/rolling_kalker.h"
+#include "dc/status.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+/* The settings the rolling model and the hand-over share (same names, so
+   one deck value reaches both). */
+static const double DC_ROLLING_VMIN_DEFAULT = 1e-3;   /* rollingVelocityMin [m/s] */
+
+/* The hand-over record in the contact history: V, ex (3), slip (3), spin,
+   acts. Recomputed every step before it is read. */
+enum { DC_ROLLING_KIN_NFIELDS = 9 };
+static const char *const dc_rolling_kin_names[DC_ROLLING_KIN_NFIELDS] = {
+  "dc_rolling_V", "dc_rolling_ex_x", "dc_rolling_ex_y", "dc_rolling_ex_z", "dc_rolling_slip_x",
+  "dc_rolling_slip_y", "dc_rolling_slip_z", "dc_rolling_spin", "dc_rolling_acts"};
+static const char *const dc_rolling_kin_flips[DC_ROLLING_KIN_NFIELDS] = {"0", "0", "0", "0", "1", "1", "1", "0", "0"};
+
+/* The rolling kinematics of one contact (dc_rolling_kinematics_capped). */
+class RollingKinematics {
+public:
+  RollingKinematics() : superquadric_atoms_(false) {}
+
+  void setup(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb)
+  {
+    superquadric_atoms_ = lmp->atom->superquadric_flag;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    curvature_.setupPoints(lmp, cmb);
+#else
+    (void)cmb;
+#endif
+  }
+
+  /* Kinematics of a touching contact; a c_core error stops the run with a
+     message naming the atom and the inputs. */
+  void compute(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, double max_radius_factor, dc_rolling_kin &k)
+  {
+    double **x = lmp->atom->x;
+    const double *n = d.en;
+    dc_rolling_curvature ci, cj;
+    double wi[3], wj[3], ri[3], rj[3];
+    double R_max = INFINITY;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    const bool sq = d.is_non_spherical && superquadric_atoms_;
+#else
+    const bool sq = false;
+#endif
+    if (sq) {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+      double k1[2], k2[2], d1[2][3];
+      curvature_.bodyCurvatures(lmp, d, k1, k2, d1, "kalker");
+      ci.k1 = k1[0]; ci.k2 = k2[0];
+      cj.k1 = k1[1]; cj.k2 = k2[1];
+      for (int c = 0; c < 3; c++) {
+        ci.d1[c] = d1[0][c];
+        cj.d1[c] = d1[1][c];
+        ri[c] = d.contact_point[c] - x[d.i][c];
+        rj[c] = d.is_wall ? 0.0 : d.contact_point[c] - x[d.j][c];
+      }
+      const double reff = d.is_wall ? d.radi : d.radi * d.radj / (d.radi + d.radj);
+      R_max = max_radius_factor * reff;
+#endif
+    } else {
+      ci.k1 = ci.k2 = 1.0 / d.radi;
+      cj.k1 = cj.k2 = d.is_wall ? 0.0 : 1.0 / d.radj;
+      for (int c = 0; c < 3; c++) {
+        ci.d1[c] = cj.d1[c] = 0.0;
+        ri[c] = -d.cri * n[c];
+        rj[c] = d.is_wall ? 0.0 : d.crj * n[c];
+      }
+    }
+    /* material velocities at the contact point: w = v + omega x r */
+    const double *oi = d.omega_i;
+    wi[0] = d.v_i[0] + oi[1] * ri[2] - oi[2] * ri[1];
+    wi[1] = d.v_i[1] + oi[2] * ri[0] - oi[0] * ri[2];
+    wi[2] = d.v_i[2] + oi[0] * ri[1] - oi[1] * ri[0];
+    double dw[3];
+    if (d.is_wall) {
+      for (int c = 0; c < 3; c++) {
+        wj[c] = d.v_j[c];
+        dw[c] = oi[c];
+      }
+    } else {
+      const double *oj = d.omega_j;
+      wj[0] = d.v_j[0] + oj[1] * rj[2] - oj[2] * rj[1];
+      wj[1] = d.v_j[1] + oj[2] * rj[0] - oj[0] * rj[2];
+      wj[2] = d.v_j[2] + oj[0] * rj[1] - oj[1] * rj[0];
+      for (int c = 0; c < 3; c++) dw[c] = oi[c] - oj[c];
+    }
+    const double dv[3] = {wi[0] - wj[0], wi[1] - wj[1], wi[2] - wj[2]};
+    const int st = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, R_max, &k);
+    if (st != DC_OK) {
+      char msg[512];
+      snprintf(msg, sizeof msg, "Rolling model kalker: contact of atom %d with %s %d: rolling kinematics: %s "
+               "(curvatures %g, %g and %g, %g 1/m, relative velocity %g %g %g m/s, relative spin %g %g %g 1/s)",
+               (int)lmp->atom->tag[d.i], d.is_wall ? "wall type" : "atom",
+               d.is_wall ? d.jtype : (int)lmp->atom->tag[d.j], dc_status_str(st), ci.k1, ci.k2, cj.k1, cj.k2,
+               dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
+      lmp->error->one(FLERR, msg);
+    }
+  }
+
+private:
+  bool superquadric_atoms_;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  SuperquadricCurvature curvature_;
+#endif
+};
+
+/* The tangential models' side of the hand-over. */
+class RollingHandover {
+public:
+  RollingHandover() : cmb_(0), offset_(-1), v_min_(DC_ROLLING_VMIN_DEFAULT), max_radius_factor_(100.0) {}
+
+  /* From the tangential model's constructor. */
+  void attach(ContactModelBase *cmb) { cmb_ = cmb; }
+
+  /* From its registerSettings (after every sub-model's constructor):
+     the rolling model's settings, when there is one. */
+  void registerSettings(Settings &settings)
+  {
+    if (!announced()) return;
+    settings.registerDoubleSetting("rollingVelocityMin", v_min_, DC_ROLLING_VMIN_DEFAULT);
+    settings.registerDoubleSetting("maxRadiusFactor", max_radius_factor_, 100.0);
+  }
+
+  /* From its postSettings: the history values of the hand-over record. */
+  void setup(LAMMPS_NS::LAMMPS *lmp, IContactHistorySetup *hsetup)
+  {
+    if (!announced()) return;
+    for (int k = 0; k < DC_ROLLING_KIN_NFIELDS; k++) {
+      const int off = hsetup->add_history_value(dc_rolling_kin_names[k], dc_rolling_kin_flips[k]);
+      if (k == 0) offset_ = off;
+    }
+    cmb_->add_history_offset("dc_rolling_kin", offset_);
+    kinematics_.setup(lmp, cmb_);
+  }
+
+  /* Whether a rolling model shares this contact. */
+  bool active() const { return offset_ >= 0; }
+
+  /* From its surfacesIntersect: the kinematics of this contact stored for
+     the rolling model; true when the rolling model acts (the tangential
+     model then applies nothing and releases its history). */
+  bool rolls(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const dc_patch &p)
+  {
+    dc_rolling_kin k;
+    kinematics_.compute(lmp, d, max_radius_factor_, k);
+    dc_rolling_params prm;
+    prm.mu = 0.0;
+    prm.v_min = v_min_;
+    prm.model = DC_ROLLING_VJ;
+    const int acts = dc_rolling_acts(&prm, &p, &k);
+    double *h = &d.contact_history[offset_];
+    h[0] = k.V;
+    for (int c = 0; c < 3; c++) {
+      h[1 + c] = k.ex[c];
+      h[4 + c] = k.slip[c];
+    }
+    h[7] = k.spin;
+    h[8] = acts ? 1.0 : 0.0;
+    return acts != 0;
+  }
+
+private:
+  bool announced() const { return cmb_ && cmb_->get_history_offset("dc_rolling_model") >= 0; }
+
+  ContactModelBase *cmb_;
+  int offset_;
+  double v_min_, max_radius_factor_;
+  RollingKinematics kinematics_;
+};
+
+}
+}
+#endif
