@@ -212,7 +212,11 @@ int dc_classical_normal_step(const dc_classical_normal *m, double R, double meff
     int st = linear_stiffness(m, R, meff, &K);
     if (st) return st;
     if (delta > dmax) dmax = delta;
-    double KU = m->p.law == DC_CLASSICAL_HLS_CONSTANT ? K * m->ku_ratio : K * (1.0 + m->p.S * dmax);
+    double KU = K * m->ku_ratio;
+    if (m->p.law == DC_CLASSICAL_HLS_VARIABLE) {
+      const double Sd = m->p.S * dmax;   /* may overflow where K_L S delta_max does not */
+      KU = isfinite(Sd) ? K * (1.0 + Sd) : K * m->p.S * dmax;
+    }
     if (!(KU <= DBL_MAX)) return DC_ERANGE;
     F = K * dmax + KU * (delta - dmax);
     if (delta == dmax) { F = K * delta; kn = K; }
@@ -248,24 +252,29 @@ int dc_classical_lsd_collision(double K, double eta, double meff, double v0, int
   if (!finite_pos(K) || !finite_pos(meff) || !finite_pos(v0) || !(eta >= 0.0) || !isfinite(eta) ||
       (limit != 0 && limit != 1))
     return DC_EDOM;
-  const double psi = eta / (2.0 * meff), phi2 = K / meff;
-  if (!(psi * psi < phi2)) return DC_EDOM;   /* not underdamped */
-  const double W = sqrt(phi2 - psi * psi);
-  const double r = psi / W;   /* 1/|beta| */
+  /* with psi = eta/(2m) and W = (K/m - psi^2)^1/2 in units free of the
+     scales (no intermediate leaves the doubles where the figures do not):
+     z = psi (m/K)^1/2 = eta / (2 (m K)^1/2), t0 = (m/K)^1/2, W t0 = s */
+  const double z = fabs(eta) / (2.0 * (sqrt(meff) * sqrt(K)));   /* eta = -0 as 0 (atan2 below) */
+  if (!(z < 1.0)) return DC_EDOM;   /* not underdamped */
+  const double q = meff / K, t0 = q >= DBL_MIN && q <= DBL_MAX ? sqrt(q) : sqrt(meff) / sqrt(K);
+  const double s = sqrt((1.0 - z) * (1.0 + z));
+  const double r = z / s;   /* psi/W = 1/|beta| */
   dc_classical_collision o;
-  /* delta = v0/W exp(-psi t) sin(W t): maximum at W t = atan(W/psi) */
-  const double wm = atan2(W, psi);
-  o.dmax = v0 / W * exp(-r * wm) * sin(wm);
+  /* delta = v0/W exp(-psi t) sin(W t): maximum at W t = atan(W/psi),
+     where sin(W t) = s */
+  const double wm = atan2(s, z);
+  o.dmax = v0 * t0 * exp(-r * wm);
   o.Fmax = 0.0;
   o.dres = 0.0;
   if (!limit) {
     /* delta = 0 at W Tc = pi; rebound v0 exp(-psi pi/W) */
-    o.Tc = M_PI / W;
+    o.Tc = M_PI * t0 / s;
     o.e = exp(-M_PI * r);
   } else {
-    /* F = K delta + eta ddelta = 0: tan(W t) = -eta W / (K - eta psi) */
-    const double th = atan2(eta * W, -(K - eta * psi));
-    o.Tc = th / W;
+    /* F = K delta + eta ddelta = 0: tan(W t) = -eta W / (K - eta psi) = -2 z s / (1 - 2 z^2) */
+    const double th = atan2(2.0 * z * s, -(1.0 - 2.0 * z * z));
+    o.Tc = th * t0 / s;
     o.e = fabs(exp(-r * th) * (cos(th) - r * sin(th)));
   }
   if (!isfinite(o.Tc) || !isfinite(o.dmax) || !isfinite(o.e)) return DC_ERANGE;
@@ -294,15 +303,19 @@ int dc_classical_hls_collision(int law, double KL, double x, double meff, double
 {
   if (!finite_pos(KL) || !finite_pos(meff) || !finite_pos(v0) || !isfinite(x)) return DC_EDOM;
   dc_classical_collision o;
-  const double w = sqrt(meff / KL);
+  /* (m/K_L)^1/2 and (m K_L)^1/2, from the roots where the quotient or product leaves the doubles */
+  const double q = meff / KL, mk = meff * KL;
+  const double w = q >= DBL_MIN && q <= DBL_MAX ? sqrt(q) : sqrt(meff) / sqrt(KL);
   o.dmax = v0 * w;
-  o.Fmax = v0 * sqrt(meff * KL);
+  o.Fmax = v0 * (mk >= DBL_MIN && mk <= DBL_MAX ? sqrt(mk) : sqrt(meff) * sqrt(KL));
   if (law == DC_CLASSICAL_HLS_CONSTANT) {
     if (!(x > 0.0 && x <= 1.0)) return DC_EDOM;
     o.e = x;
   } else if (law == DC_CLASSICAL_HLS_VARIABLE) {
     if (!(x >= 0.0)) return DC_EDOM;
-    o.e = 1.0 / sqrt(1.0 + x * o.dmax);   /* (K_L / (K_L + S F_max))^1/2 */
+    /* (K_L / (K_L + S F_max))^1/2; S delta_max alone may overflow */
+    const double Sd = x * o.dmax;
+    o.e = isfinite(Sd) ? 1.0 / sqrt(1.0 + Sd) : 1.0 / (sqrt(x) * sqrt(o.dmax));
   } else {
     return DC_EDOM;
   }

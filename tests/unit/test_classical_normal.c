@@ -7,7 +7,8 @@
    integrating the head-on collision m delta'' = -F with the C law (RK4,
    events located by bisection on sub-steps) at step sizes from Tc/25 to
    Tc/800 (graded towards delta = 0), showing convergence. Then the parameter checks (names), the
-   hysteretic reloading path, and a random never-NaN sweep. */
+   hysteretic reloading path, magnitudes at the edges of the doubles, and a
+   random never-NaN sweep. */
 #include "check.h"
 #include "dc/classical_normal.h"
 #include "dc/damping.h"
@@ -545,6 +546,49 @@ static void test_checks(void)
   CHECK(dc_damping_tsuji_alpha(0.0, &a) == DC_EDOM && dc_damping_tsuji_alpha(1.0, &a) == DC_OK && a == 0.0);
 }
 
+/* ------------------------------------------------------------------ */
+/* Magnitudes at the edges of the doubles (cases of test_fuzz.c)      */
+
+static void test_extremes(void)
+{
+  dc_classical_collision c;
+  /* LSD, z = eta / (2 (m K)^1/2) = 1/2 with m K = 2^-1000 below the
+     doubles' range of eta/(2m) squared: was DC_EDOM */
+  const double t0 = 0x1p-540, s = sqrt(0.75), r = 0.5 / s;
+  CHECK(dc_classical_lsd_collision(0x1p40, 0x1p-500, 0x1p-1040, 1.0, 0, &c) == DC_OK);
+  CHECK_REL(c.Tc, M_PI * t0 / s, 1e-15, "LSD Tc, m K = 2^-1000");
+  CHECK_REL(c.dmax, t0 * exp(-r * M_PI / 3.0), 1e-15, "LSD delta_max, m K = 2^-1000");
+  CHECK_REL(c.e, exp(-M_PI * r), 1e-15, "LSD restitution, m K = 2^-1000");
+  /* K/m = 2^1200 beyond the doubles: was DC_OK with Tc = 0 */
+  CHECK(dc_classical_lsd_collision(0x1p600, 0.0, 0x1p-600, 1.0, 0, &c) == DC_OK);
+  CHECK_REL(c.Tc, M_PI * 0x1p-600, 1e-15, "LSD Tc, K/m = 2^1200");
+  /* eta = -0 with limitForce: was Tc < 0 (atan2 of -0) */
+  dc_classical_collision c0;
+  CHECK(dc_classical_lsd_collision(1e5, 0.0, 1e-3, 1.0, 1, &c0) == DC_OK);
+  CHECK(dc_classical_lsd_collision(1e5, -0.0, 1e-3, 1.0, 1, &c) == DC_OK);
+  CHECK(c.Tc > 0.0 && c.Tc == c0.Tc && c.e == c0.e);
+  /* HLS, m/K_L = 2^1320: was DC_ERANGE for delta_max = 2^-40 */
+  CHECK(dc_classical_hls_collision(DC_CLASSICAL_HLS_CONSTANT, 0x1p-660, 0.5, 0x1p660, 0x1p-700, &c) == DC_OK);
+  CHECK(c.dmax == 0x1p-40 && c.Fmax == 0x1p-700);
+  CHECK_REL(c.Tc, 0.5 * M_PI * 0x1p660 * 1.5, 1e-15, "HLS Tc, m/K_L = 2^1320");
+  /* HLS variable, S delta_max = 1e600: was e = 0 */
+  CHECK(dc_classical_hls_collision(DC_CLASSICAL_HLS_VARIABLE, 1.0, 1e300, 1.0, 1e300, &c) == DC_OK);
+  CHECK_REL(c.e, 1e-300, 1e-15, "HLS variable restitution, S delta_max = 1e600");
+  /* the variable unloading stiffness K_L (1 + S delta_max) = 1e210 with
+     S delta_max = 1e310: was DC_ERANGE */
+  dc_classical_normal_params p = params0(DC_CLASSICAL_HLS_VARIABLE);
+  p.kn = 1e-100;
+  p.S = 1e300;
+  law_t L;
+  make_law(&L, &p, 1.0, 1.0);
+  dc_classical_normal_state h = {0.0};
+  dc_classical_normal_out o;
+  CHECK(dc_classical_normal_step(&L.m, 1.0, 1.0, 1e10, 0.0, &h, &o) == DC_OK);
+  CHECK(o.c.F == 1e-100 * 1e10 && o.c.kn == 1e-100 && h.delta_max == 1e10);
+  CHECK(dc_classical_normal_step(&L.m, 1.0, 1.0, 0.99e10, 0.0, &h, &o) == DC_OK);
+  CHECK(o.c.F == 0.0 && o.c.kn == 0.0 && h.delta_max == 1e10);
+}
+
 static double wild(unsigned long long *s)
 {
   const double u = check_uniform(s);
@@ -650,6 +694,7 @@ int main(void)
   test_point_laws();
   test_hls_path();
   test_checks();
+  test_extremes();
   test_random();
   CHECK(law_failures == 0);
   return check_summary("classical_normal");
