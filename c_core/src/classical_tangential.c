@@ -4,6 +4,7 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 const dc_history_field dc_classical_tangential_history[DC_CT_HISTORY_NFIELDS] = {
   {"ct_spring_x", 1}, {"ct_spring_y", 1}, {"ct_spring_z", 1},
@@ -134,6 +135,13 @@ static void turn_into_plane(double *v, const double *n)
   if (!finite3(v)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
 }
 
+/* The history back: the laws other than INCREMENTAL own only the spring. */
+static void store(int law, const dc_classical_tangential_state *s, dc_classical_tangential_state *h)
+{
+  memcpy(h->spring, s->spring, sizeof h->spring);
+  if (law == DC_CT_INCREMENTAL) memcpy(h->rev, s->rev, sizeof h->rev);
+}
+
 static void project_plane(double *v, const double *n)
 {
   const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
@@ -214,16 +222,21 @@ static void langston_spring(double K0, double lim, const double *du, double *s, 
     return;
   }
   *d = 1.5 * (lim / K0);
-  const double r = norm3(s);
-  double x = r / *d;
+  const double r = norm3(s), x = r > 0.0 ? r / *d : 0.0;
   if (x >= 1.0) {
-    for (int k = 0; k < 3; k++) s[k] = s[k] / r * *d;
-    x = 1.0;
+    /* at the limit (d may underflow to 0: the direction from s itself) */
+    for (int k = 0; k < 3; k++) {
+      const double e = s[k] / r;
+      s[k] = e * *d;
+      Fe[k] = e * lim;
+    }
+    *kt = 0.0;
     *at_limit = 1;
+    return;
   }
   /* mu F_n (1 - (1 - x)^3/2) */
-  const double f = x >= 1.0 ? lim : -lim * expm1(1.5 * log1p(-x));
-  for (int k = 0; k < 3; k++) Fe[k] = r > 0.0 ? s[k] / (x >= 1.0 ? *d : r) * f : 0.0;
+  const double f = -lim * expm1(1.5 * log1p(-x));
+  for (int k = 0; k < 3; k++) Fe[k] = r > 0.0 ? s[k] / r * f : 0.0;
   *kt = K0 * sqrt(1.0 - x);
 }
 
@@ -291,7 +304,7 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
   const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
   if (du ? !finite3(du) : !(dt > 0.0 && dt <= DBL_MAX)) return DC_EDOM;
-  if (!finite3(h->spring) || !finite3(h->rev)) return DC_EDOM;
+  if (!finite3(h->spring) || (law == DC_CT_INCREMENTAL && !finite3(h->rev))) return DC_EDOM;
   if (!(c->meff > 0.0 && c->meff <= DBL_MAX) || !(c->kn >= 0.0 && c->kn <= DBL_MAX) ||
       !(c->gamman >= 0.0 && c->gamman <= DBL_MAX))
     return DC_EDOM;
@@ -304,14 +317,17 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
   }
 
   dc_classical_tangential_out o;
-  dc_classical_tangential_state s = *h;
+  dc_classical_tangential_state s;   /* the laws but INCREMENTAL neither read nor write h->rev */
+  memcpy(s.spring, h->spring, sizeof s.spring);
+  if (law == DC_CT_INCREMENTAL) memcpy(s.rev, h->rev, sizeof s.rev);
+  else s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
   o.Ft[0] = o.Ft[1] = o.Ft[2] = 0.0;
   o.kt = o.gammat = 0.0;
   o.sliding = 0;
   if (!(patch->formed != 0.0)) {
     s.spring[0] = s.spring[1] = s.spring[2] = 0.0;
     s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
-    *h = s;
+    store(law, &s, h);
     *out = o;
     return DC_OK;
   }
@@ -324,7 +340,12 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
 
   switch (law) {
   case DC_CT_COULOMB: {
-    /* notes 4.2: F = mu F_n v/|v| */
+    /* notes 4.2: F = mu F_n v/|v|, v from vt scaled to order one (exactly:
+       a subnormal vt has too few bits to give a direction) */
+    int e;
+    frexp(fmax(fabs(vt[0]), fmax(fabs(vt[1]), fabs(vt[2]))), &e);
+    for (int k = 0; k < 3; k++) v[k] = ldexp(vt[k], -e);
+    project_plane(v, n);
     const double vv = norm3(v);
     if (vv > 0.0) {
       for (int k = 0; k < 3; k++) o.Ft[k] = v[k] / vv * lim;
@@ -377,7 +398,7 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
     o.gammat = eta;
     for (int k = 0; k < 3; k++) o.Ft[k] = Fe[k] + eta * v[k];
     o.sliding = limit_force(o.Ft, lim) || at_limit;
-    o.kt = at_limit ? 0.0 : kt;
+    o.kt = o.sliding ? 0.0 : kt;
     s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
     break;
   }
@@ -392,7 +413,7 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
   }
   if (!finite3(o.Ft) || !finite3(s.spring) || !finite3(s.rev) || !isfinite(o.kt) || !isfinite(o.gammat))
     return DC_ERANGE;
-  *h = s;
+  store(law, &s, h);
   *out = o;
   return DC_OK;
 }

@@ -6,8 +6,8 @@
    the spring with sliding and of Langston's law; Walton-Braun's virgin and
    reversal curves and its stable loop against tests/reference/classical.csv),
    the tangential restitution of Deen's damping, the damping forms, 3D
-   (plane rotation, i/j swap), the parameter checks and a random never-NaN
-   sweep. */
+   (plane rotation, i/j swap), the parameter checks, the history fields
+   each law owns, edge magnitudes and a random never-NaN sweep. */
 #include "check.h"
 #include "dc/classical_tangential.h"
 #include "dc/status.h"
@@ -573,6 +573,60 @@ static void test_checks(void)
   CHECK(flips && !strcmp(dc_classical_tangential_history[0].name, "ct_spring_x"));
 }
 
+/* The history a law owns, and edge magnitudes (cases of test_fuzz.c). */
+static void test_history_and_edges(void)
+{
+  /* the laws but INCREMENTAL neither read nor write the reversal force (a
+     wrapper stores only the spring; the next fields may be another
+     model's): a NaN there was DC_EDOM, finite values were zeroed */
+  for (int law = DC_CT_COULOMB; law <= DC_CT_TSUJI; law++) {
+    const ct_params p = params0(law);
+    const ct_model m = model(&p);
+    const dc_patch pa = patch_of(1e-4, 1.0);
+    for (int k = 0; k < 2; k++) {
+      ct_state h = {{1e-7, 0.0, 0.0}, {k ? 7.0 : NAN, -1.5, 2.0}};
+      const ct_state h0 = h;
+      ct_out o;
+      CHECK(step1(&m, &pa, 1e-8, 1e-3, &h, &o) == DC_OK && !memcmp(h.rev, h0.rev, sizeof h.rev));
+    }
+  }
+  /* Langston limited by its viscous part: sliding, so no tangent stiffness
+     (was K0 (1 - x)^1/2) */
+  ct_params p = params0(DC_CT_LANGSTON);
+  p.Gstar = 1e9;
+  p.mu = 0.5;
+  p.eta_l = 0.3;
+  ct_model m = model(&p);
+  dc_patch pa = patch_of(1e-4, 2.0);
+  ct_state h;
+  memset(&h, 0, sizeof h);
+  ct_out o;
+  const double d = 1.5 * p.mu * 2.0 / (8.0 * p.Gstar * 1e-4);
+  CHECK(step1(&m, &pa, 0.1 * d, 10.0, &h, &o) == DC_OK && o.sliding == 1 && o.kt == 0.0);
+  CHECK_REL(norm3(o.Ft), p.mu * 2.0, 1e-15, "Langston limited by its viscous part");
+  /* Langston with the slip distance 1.5 mu F/K0 below the doubles (K0 =
+     8e210, mu F = 4e-201): was DC_ERANGE (0/0), the force is mu F along
+     the spring */
+  p = params0(DC_CT_LANGSTON);
+  p.Gstar = 1e10;
+  m = model(&p);
+  pa = patch_of(1e200, 1e-200);
+  memset(&h, 0, sizeof h);
+  CHECK(step1(&m, &pa, 1e-9, 0.0, &h, &o) == DC_OK && o.sliding == 1 && o.kt == 0.0);
+  CHECK_REL(o.Ft[0], 0.4 * 1e-200, 1e-15, "Langston at the limit, slip distance underflowed");
+  /* Coulomb with a subnormal velocity: was above mu F by 1e-11 and out of
+     the plane (too few bits for a direction) */
+  p = params0(DC_CT_COULOMB);
+  m = model(&p);
+  pa = patch_of(1e-4, 1.0);
+  memset(&h, 0, sizeof h);
+  const double n[3] = {0.6, 0.0, 0.8}, vt[3] = {3e-313, -1.5e-313, 5.2e-313};
+  CHECK(dc_classical_tangential_step(&m, &pa, &C0, n, NULL, vt, 1e-6, &h, &o) == DC_OK);
+  const double F = norm3(o.Ft);
+  CHECK(F <= 0.4 * (1.0 + 2e-16) && F >= 0.4 * (1.0 - 4e-16));
+  CHECK(fabs(o.Ft[0] * n[0] + o.Ft[1] * n[1] + o.Ft[2] * n[2]) <= 1e-16);
+}
+
 static double wild(unsigned long long *s)
 {
   const double specials[] = {0.0, -0.0, 1.0, -1.0, DBL_MIN, DBL_MAX, -DBL_MAX, 5e-324, 1e-300, 1e300,
@@ -710,6 +764,7 @@ int main(void)
   test_3d();
   test_checks();
   test_edom();
+  test_history_and_edges();
   test_random();
   return check_summary("classical_tangential");
 }
