@@ -240,7 +240,10 @@ static void integrals(const dc_gw_plastic_shape *sh, double ratio, double h, dc_
   /* elastic-plastic regime, u in [a, b] */
   double p0 = 0.0, p1 = 0.0;
   const double s_ep = regime_window(h, a, b, &p0, &p1);
-  const int ep_on = s_ep * s_ep <= skip2 && p0 < p1;
+  /* narrower than the doubles resolve (1/a or 1/(b - a) overflows: b - a
+     below 1e-302) it adds nothing: skipped */
+  const int ep_fits = 1.0 / a <= DBL_MAX && 1.0 / (a * (ratio - 1.0)) <= DBL_MAX;
+  const int ep_on = ep_fits && s_ep * s_ep <= skip2 && p0 < p1;
   /* fully plastic regime, u > b */
   const double s_pl = h + b > 0.0 ? h + b : 0.0;
   const int pl_on = b < HUGE_VAL && (ep_on || s_pl * s_pl <= skip2);
@@ -335,7 +338,7 @@ int dc_gw_plastic_summit_init(const dc_hertz_geom *g, double Estar, const dc_gw_
     t.lambda = g->K / (g->K - g->D);
   } else {
     const double RR = g->R_major * g->R_minor;
-    t.lambda = 2.0 * (RR >= DBL_MIN && RR <= DBL_MAX ? sqrt(RR) : sqrt(g->R_major) * sqrt(g->R_minor)) / g->R_area;
+    t.lambda = 2.0 * ((RR >= DBL_MIN && RR <= DBL_MAX ? sqrt(RR) : sqrt(g->R_major) * sqrt(g->R_minor)) / g->R_area);
   }
   if (!(t.lambda >= 1.0)) t.lambda = 1.0;   /* not reached (tested down to R_minor/R_major = 1e-12) */
   /* Eq. 41 for a summit: w1 = (pi K_v H/(2 E*))^2 R_area^2/R_force */
@@ -356,6 +359,27 @@ int dc_gw_plastic_summit_init(const dc_hertz_geom *g, double Estar, const dc_gw_
   return DC_OK;
 }
 
+/* The summit law at omega >= w1: A = pi R_area omega af, f = A H pf,
+   df = pi R_area H dfac. */
+static void plastic_factors(const dc_gw_plastic_summit *s, double omega, double *af, double *pf, double *dfac)
+{
+  const double rho = s->ratio;   /* w2/w1 */
+  const double r = s->w1 > 0.0 ? omega / s->w1 : HUGE_VAL;
+  if (r <= rho && rho > 1.0) {   /* elastic-plastic (ZMC form, see the header) */
+    const double rm1 = rho - 1.0;
+    const double x = (r - 1.0) / rm1;
+    const double c = x * x * (3.0 - 2.0 * x);
+    const double dP = s->c_h - s->Km;
+    *af = 1.0 + (s->lambda - 1.0) * c;
+    *pf = s->c_h - dP * (1.0 - log(r) * s->inv_log_ratio);
+    *dfac = *af * *pf + (s->lambda - 1.0) * 6.0 * x * (1.0 - x) * r / rm1 * *pf + *af * dP * s->inv_log_ratio;
+  } else {               /* fully plastic */
+    *af = s->lambda;
+    *pf = s->c_h;
+    *dfac = s->c_h * s->lambda;
+  }
+}
+
 int dc_gw_plastic_summit_law(const dc_gw_plastic_summit *s, double omega, double *f, double *area,
                              double *df)
 {
@@ -373,22 +397,8 @@ int dc_gw_plastic_summit_law(const dc_gw_plastic_summit *s, double omega, double
     if (!isfinite(D)) D = dc_scaled_product(4, (const double[]){2.0, s->Estar, sR, so});
     if (!isfinite(A)) A = dc_scaled_product(3, (const double[]){M_PI, s->R_area, omega});
   } else {
-    const double rho = s->ratio;   /* w2/w1 */
-    const double r = s->w1 > 0.0 ? omega / s->w1 : HUGE_VAL;
-    double af, pf, dfac;   /* A = pi R_area omega af, f = A H pf, df = pi R_area H dfac */
-    if (r <= rho && rho > 1.0) {   /* elastic-plastic (ZMC form, see the header) */
-      const double rm1 = rho - 1.0;
-      const double x = (r - 1.0) / rm1;
-      const double c = x * x * (3.0 - 2.0 * x);
-      const double dP = s->c_h - s->Km;
-      af = 1.0 + (s->lambda - 1.0) * c;
-      pf = s->c_h - dP * (1.0 - log(r) * s->inv_log_ratio);
-      dfac = af * pf + (s->lambda - 1.0) * 6.0 * x * (1.0 - x) * r / rm1 * pf + af * dP * s->inv_log_ratio;
-    } else {               /* fully plastic */
-      af = s->lambda;
-      pf = s->c_h;
-      dfac = s->c_h * s->lambda;
-    }
+    double af, pf, dfac;
+    plastic_factors(s, omega, &af, &pf, &dfac);
     A = M_PI * s->R_area * omega * af;
     F = A * s->H * pf;
     D = M_PI * s->R_area * s->H * dfac;
@@ -409,13 +419,18 @@ int dc_gw_plastic_integrals(const dc_gw_plastic_shape *sh, double h, dc_gw_plast
         sh->lambda >= 1.0 && isfinite(sh->lambda) && sh->Km > 0.0 && sh->c_h >= sh->Km &&
         isfinite(sh->c_h) && isfinite(h) && h >= DC_GW_H_MIN))
     return DC_EDOM;
-  integrals(sh, sh->b / sh->a, h, J);
+  dc_gw_plastic_sums t;
+  integrals(sh, sh->b / sh->a, h, &t);
+  if (!(isfinite(t.Je) && isfinite(t.Je12) && isfinite(t.Jp) && isfinite(t.Jdp) && isfinite(t.JA))) return DC_ERANGE;
+  *J = t;
   return DC_OK;
 }
 
 /* The rough sum for a summit law s, roughness sigma > 0 and h = -delta/sigma:
-   J with the prefactors left to the caller. */
-static void rough_sums(const dc_gw_plastic_summit *s, double sigma, double h, dc_gw_plastic_sums *J)
+   J with the prefactors left to the caller. Jp and Jdp are linear in
+   (Km, c_h): where they overflow (c_h near the largest doubles) they are
+   taken with both scaled down; returns the factor Jp, Jdp need (1 or 2^600). */
+static double rough_sums(const dc_gw_plastic_summit *s, double sigma, double h, dc_gw_plastic_sums *J)
 {
   dc_gw_plastic_shape sh;
   sh.a = s->w1 / sigma;
@@ -425,6 +440,11 @@ static void rough_sums(const dc_gw_plastic_summit *s, double sigma, double h, dc
   sh.Km = s->Km;
   sh.c_h = s->c_h;
   integrals(&sh, s->ratio, h, J);
+  if (isfinite(J->Jp) && isfinite(J->Jdp)) return 1.0;
+  sh.Km = ldexp(s->Km, -600);
+  sh.c_h = ldexp(s->c_h, -600);
+  integrals(&sh, s->ratio, h, J);
+  return 0x1p600;
 }
 
 static int state_finite(const dc_gw_rough_state *s)
@@ -464,14 +484,19 @@ int dc_gw_rough_plastic(const dc_hertz_geom *g, double Estar, const dc_gw_plasti
       } else {
         double f, A, D;
         st = dc_gw_plastic_summit_law(&sm, delta, &f, &A, &D);
-        if (st != DC_OK) return st;
-        s.F = n_asp * f;
-        s.kn = n_asp * D;
-        s.area = n_asp * A;
-        if (!state_finite(&s)) {
-          s.F = dc_scaled_product(2, (const double[]){n_asp, f});
-          s.kn = dc_scaled_product(2, (const double[]){n_asp, D});
-          s.area = dc_scaled_product(2, (const double[]){n_asp, A});
+        if (st == DC_OK) {
+          s.F = n_asp * f;
+          s.kn = n_asp * D;
+          s.area = n_asp * A;
+        }
+        if (st != DC_OK || !state_finite(&s)) {
+          /* one summit's results, or n_asp times them, out of the doubles:
+             n_asp inside the scaled products */
+          double af, pf, dfac;
+          plastic_factors(&sm, delta, &af, &pf, &dfac);
+          s.F = dc_scaled_product(7, (const double[]){n_asp, M_PI, sm.R_area, delta, af, sm.H, pf});
+          s.kn = dc_scaled_product(5, (const double[]){n_asp, M_PI, sm.R_area, sm.H, dfac});
+          s.area = dc_scaled_product(5, (const double[]){n_asp, M_PI, sm.R_area, delta, af});
         }
       }
     }
@@ -479,13 +504,13 @@ int dc_gw_rough_plastic(const dc_hertz_geom *g, double Estar, const dc_gw_plasti
     const double h = -delta / sigma;
     if (h < DC_GW_H_MIN) return DC_ERANGE;  /* unreachable: sigma > 1e-80 |delta| */
     dc_gw_plastic_sums J;
-    rough_sums(&sm, sigma, h, &J);
+    const double cs = rough_sums(&sm, sigma, h, &J);
     const double sRc = sqrt(g->Rc), ss = sqrt(sigma), H = p->hardness;
     /* elastic summits as dc_gw_rough_elliptic, plastic ones with P_H */
     const double Fe = n_asp * 4.0 / 3.0 * Estar * sRc * sigma * ss * g->gamma * J.Je;
     const double ke = n_asp * 2.0 * Estar * sRc * ss * g->gamma * J.Je12;
-    const double Fp = n_asp * M_PI * g->Rc * sigma * g->beta * H * J.Jp;
-    const double kp = n_asp * M_PI * g->Rc * g->beta * H * J.Jdp;
+    const double Fp = n_asp * M_PI * g->Rc * sigma * g->beta * H * J.Jp * cs;
+    const double kp = n_asp * M_PI * g->Rc * g->beta * H * J.Jdp * cs;
     s.F = Fe + Fp;
     s.kn = ke + kp;
     s.area = n_asp * M_PI * g->Rc * sigma * g->beta * J.JA;
@@ -494,9 +519,9 @@ int dc_gw_rough_plastic(const dc_hertz_geom *g, double Estar, const dc_gw_plasti
       /* a product left the range of doubles: scaled products, summed in
          the larger term's scale */
       const double fe = dc_scaled_product(8, (const double[]){n_asp, 4.0 / 3.0, Estar, sRc, sigma, ss, g->gamma, J.Je});
-      const double fp = dc_scaled_product(7, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, H, J.Jp});
+      const double fp = dc_scaled_product(8, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, H, J.Jp, cs});
       const double ge = dc_scaled_product(7, (const double[]){n_asp, 2.0, Estar, sRc, ss, g->gamma, J.Je12});
-      const double gp = dc_scaled_product(6, (const double[]){n_asp, M_PI, g->Rc, g->beta, H, J.Jdp});
+      const double gp = dc_scaled_product(7, (const double[]){n_asp, M_PI, g->Rc, g->beta, H, J.Jdp, cs});
       s.F = fe + fp;
       s.kn = ge + gp;
       s.area = dc_scaled_product(6, (const double[]){n_asp, M_PI, g->Rc, sigma, g->beta, J.JA});
@@ -514,20 +539,29 @@ int dc_gw_plastic_flat(const dc_gw_plastic_params *p, double Estar, double R_s, 
         sigma > 0.0 && isfinite(sigma) && isfinite(delta) && params_ok(p)))
     return DC_EDOM;
   const double h = -delta / sigma;
-  if (!(h >= DC_GW_H_MIN) || !isfinite(h)) return DC_EDOM;
+  if (!(h >= DC_GW_H_MIN)) return DC_EDOM;
+  if (!isfinite(h)) return DC_ERANGE;   /* d/sigma itself overflows */
   dc_hertz_geom g;
   int rc = dc_hertz_geometry(R_s, R_s, &g);
   if (rc != DC_OK) return rc;
   dc_gw_plastic_summit sm;
   if ((rc = dc_gw_plastic_summit_init(&g, Estar, p, &sm)) != DC_OK) return rc;
   dc_gw_plastic_sums J;
-  rough_sums(&sm, sigma, h, &J);
+  const double cs = rough_sums(&sm, sigma, h, &J);
   const double sR = sqrt(R_s), ss = sqrt(sigma), H = p->hardness;
   dc_gw_plastic_flat_state t;
-  t.p = eta * (4.0 / 3.0 * Estar * sR * sigma * ss * J.Je + M_PI * R_s * sigma * H * J.Jp);
-  t.dp = eta * (2.0 * Estar * sR * ss * J.Je12 + M_PI * R_s * H * J.Jdp);
+  t.p = eta * (4.0 / 3.0 * Estar * sR * sigma * ss * J.Je + M_PI * R_s * sigma * H * J.Jp * cs);
+  t.dp = eta * (2.0 * Estar * sR * ss * J.Je12 + M_PI * R_s * H * J.Jdp * cs);
   t.area_ratio = eta * M_PI * R_s * sigma * J.JA;
   t.h = h;
+  if (!(isfinite(t.p) && isfinite(t.dp) && isfinite(t.area_ratio)) || (t.p == 0.0 && (J.Je > 0.0 || J.Jp > 0.0))) {
+    /* a product left the range of doubles: scaled products (as dc_gw_rough_plastic) */
+    t.p = dc_scaled_product(7, (const double[]){eta, 4.0 / 3.0, Estar, sR, sigma, ss, J.Je}) +
+          dc_scaled_product(7, (const double[]){eta, M_PI, R_s, sigma, H, J.Jp, cs});
+    t.dp = dc_scaled_product(6, (const double[]){eta, 2.0, Estar, sR, ss, J.Je12}) +
+           dc_scaled_product(6, (const double[]){eta, M_PI, R_s, H, J.Jdp, cs});
+    t.area_ratio = dc_scaled_product(5, (const double[]){eta, M_PI, R_s, sigma, J.JA});
+  }
   if (!(isfinite(t.p) && isfinite(t.dp) && isfinite(t.area_ratio))) return DC_ERANGE;
   *st = t;
   return DC_OK;

@@ -4,7 +4,8 @@
    tests/reference/gen_gw_rough_plastic.py; the all-elastic limit against
    dc_gw_rough_elliptic (bit for bit); continuity of the summit law at w1
    and w2; F monotone in delta with kn = dF/d delta; the rough flat; the
-   parameter check; statuses and a random never-NaN sweep; timing. */
+   parameter check; statuses, magnitudes at the edges of the doubles and a
+   random never-NaN sweep; timing. */
 #include "check.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_plastic.h"
@@ -358,6 +359,69 @@ static void test_domain(void)
   CHECK(dc_gw_plastic_flat(&p, 1e11, 1e-5, 1e10, 0.0, 1e-7, &fl) == DC_EDOM);
 }
 
+/* (6b) magnitudes at the edges of the doubles (cases of test_fuzz.c) */
+static void test_extremes(void)
+{
+  /* truncation lambda of a geometry near DBL_MAX: was +inf with DC_OK */
+  dc_hertz_geom g;
+  dc_gw_plastic_summit sm;
+  CHECK(dc_hertz_geometry(1e308, 0.9e308, &g) == DC_OK);
+  dc_gw_plastic_params p = params(2e9, 0.577, 1.0, 108.0, DC_GW_PLASTIC_AREA_TRUNCATED);
+  CHECK(dc_gw_plastic_summit_init(&g, 1e11, &p, &sm) == DC_OK && sm.lambda >= 1.0 && sm.lambda < 2.01);
+  /* a = w1/sigma below 1/DBL_MAX: was NaN with DC_OK; the elastic and
+     elastic-plastic summits (u < b < 1e-302) add nothing */
+  dc_gw_plastic_shape sh = {1e-300, 27e-300, 2.0, 0.3, 1.0};
+  dc_gw_plastic_sums J0, J;
+  CHECK(dc_gw_plastic_integrals(&sh, 0.5, &J0) == DC_OK);
+  sh.a = 1e-310;
+  sh.b = 27e-310;
+  CHECK(dc_gw_plastic_integrals(&sh, 0.5, &J) == DC_OK);
+  CHECK_REL(J.Jp, J0.Jp, 1e-15, "Jp, a = 1e-310 as a = 1e-300");
+  CHECK_REL(J.Jdp, J0.Jdp, 1e-15, "Jdp, a = 1e-310 as a = 1e-300");
+  CHECK_REL(J.JA, J0.JA, 1e-15, "JA, a = 1e-310 as a = 1e-300");
+  /* sums beyond the doubles (lambda = DBL_MAX): DC_ERANGE, J untouched
+     (was DC_OK with Inf) */
+  sh.a = 1.0;
+  sh.b = 54.0;
+  sh.lambda = DBL_MAX;
+  J = J0;
+  CHECK(dc_gw_plastic_integrals(&sh, -10.0, &J) == DC_ERANGE && !memcmp(&J, &J0, sizeof J));
+  /* sigma = 0, fully plastic summits: one summit's force 6e408 beyond the
+     doubles, n_asp = 1e-300 of them 6e108: was DC_ERANGE */
+  CHECK(dc_hertz_geometry(1e200, 1e200, &g) == DC_OK);
+  p = dc_gw_plastic_default_params(2e9, 0.3);
+  dc_gw_rough_state st;
+  CHECK(dc_gw_rough_plastic(&g, 1e11, &p, 1e-300, 0.0, 1e199, &st) == DC_OK);
+  CHECK_REL(st.F, 1e-300 * M_PI * g.R_area * 1e199 * 2.0 * 2e9, 1e-14, "n_asp fully plastic summits, F");
+  CHECK_REL(st.area, 1e-300 * M_PI * g.R_area * 1e199 * 2.0, 1e-14, "n_asp fully plastic summits, area");
+  /* c_h near DBL_MAX: the plastic sums overflow, the force does not (was
+     DC_ERANGE); the same contact with H 2^600 times larger and K_v, c_h
+     2^600 times smaller (equal K_v H) */
+  CHECK(dc_hertz_geometry(1e-3, 1e-3, &g) == DC_OK);
+  p = params(1e-10, 1e308, 1.5e308, 108.0, DC_GW_PLASTIC_AREA_JW);
+  const dc_gw_plastic_params q = params(ldexp(1e-10, 600), ldexp(1e308, -600), ldexp(1.5e308, -600), 108.0,
+                                        DC_GW_PLASTIC_AREA_JW);
+  dc_gw_rough_state sq;
+  CHECK(dc_gw_rough_plastic(&g, 1e300, &p, 1.0, 1e-7, 1e-6, &st) == DC_OK);
+  CHECK(dc_gw_rough_plastic(&g, 1e300, &q, 1.0, 1e-7, 1e-6, &sq) == DC_OK);
+  CHECK_REL(st.F, sq.F, 1e-12, "c_h near DBL_MAX, F");
+  CHECK_REL(st.kn, sq.kn, 1e-12, "c_h near DBL_MAX, kn");
+  /* the rough flat: h = d/sigma = 1e400 overflows: DC_ERANGE (was DC_EDOM,
+     inside the domain) */
+  p = dc_gw_plastic_default_params(2e9, 0.3);
+  dc_gw_plastic_flat_state fs, fq;
+  CHECK(dc_gw_plastic_flat(&p, 1e11, 1e-5, 1e10, 1e-300, -1e100, &fs) == DC_ERANGE);
+  /* and products beyond the doubles (R_s = 1e225): was DC_ERANGE; the
+     same flat with R_s, sigma, delta 2^-700 times and eta 2^1400 times
+     (equal h, a and pressure) */
+  const double Rs = 1e225, sg = 1.7e222, d = -4.4e222, eta = 1e-254;
+  CHECK(dc_gw_plastic_flat(&p, 1e11, Rs, eta, sg, d, &fs) == DC_OK);
+  CHECK(dc_gw_plastic_flat(&p, 1e11, ldexp(Rs, -700), ldexp(eta, 1400), ldexp(sg, -700), ldexp(d, -700), &fq) == DC_OK);
+  CHECK_REL(fs.p, fq.p, 1e-13, "rough flat beyond the doubles, pressure");
+  CHECK_REL(fs.area_ratio, fq.area_ratio, 1e-13, "rough flat beyond the doubles, area ratio");
+  CHECK_REL(fs.dp, ldexp(fq.dp, -700), 1e-13, "rough flat beyond the doubles, dp/d delta");
+}
+
 /* (6) random and edge inputs: DC_OK never with a NaN or Inf, errors leave
    the state untouched */
 static void test_random(void)
@@ -466,6 +530,7 @@ int main(void)
   test_summit_law();
   test_rough_sweep();
   test_domain();
+  test_extremes();
   test_random();
   test_timing();
   return check_summary("test_gw_rough_plastic");

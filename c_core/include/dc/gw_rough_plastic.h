@@ -213,7 +213,8 @@ typedef struct {
 
 /* Domain: 0 < a < b finite with b/a <= 1e6 (as computed by the caller),
    lambda >= 1, 0 < Km <= c_h, all finite; h finite, h >= DC_GW_H_MIN.
-   DC_EDOM otherwise (J untouched). */
+   DC_EDOM otherwise, DC_ERANGE where a sum overflows (lambda or c_h near
+   the largest doubles); J untouched on both. */
 int dc_gw_plastic_integrals(const dc_gw_plastic_shape *sh, double h, dc_gw_plastic_sums *J);
 
 /* The rough contact of two bodies with geometry g (elliptic or circular),
@@ -239,7 +240,8 @@ typedef struct {
 
 /* Domain: params passing dc_gw_plastic_check, Estar, R_s, eta, sigma > 0
    and finite, delta finite with -delta/sigma >= DC_GW_H_MIN; DC_EDOM
-   otherwise, DC_ERANGE as dc_gw_rough_plastic. */
+   otherwise, DC_ERANGE as dc_gw_rough_plastic or where h = d/sigma
+   overflows. */
 int dc_gw_plastic_flat(const dc_gw_plastic_params *p, double Estar, double R_s, double eta,
                        double sigma, double delta, dc_gw_plastic_flat_state *st);
 
