@@ -4,6 +4,7 @@
 #include "dc/gw_rough_adhesive.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include "gw_rough_adhesive_table_data.h"
 
@@ -32,13 +33,16 @@ int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, d
   dc_gwa_table_pair q = {0};
   q.Estar = Estar; q.w = w; q.sigma = sigma; q.n_asp = n_asp;
   q.inv_sigma = 1.0 / sigma;
-  q.F_coef = 8.0 * w * n_asp;
+  q.F_coef = 8.0 * (w * n_asp);   /* 8 w alone may overflow */
+  if (!isfinite(q.inv_sigma)) return DC_ERANGE;
   if (w > 0.0) {
     q.ub = DC_GWA_UB;
-    q.dc_coef = 0.5 * pow(8.0 * w / (M_PI * Estar), 2.0 / 3.0);
+    /* (8 w/(pi E*))^2/3 / 2, from logarithms where the quotient leaves the doubles */
+    const double r = 8.0 * w / (M_PI * Estar);
+    q.dc_coef = 0.5 * (r >= DBL_MIN && r <= DBL_MAX ? pow(r, 2.0 / 3.0)
+                                                     : exp(2.0 / 3.0 * (log(8.0 / M_PI) + log(w) - log(Estar))));
     q.ln_sigma_dc = log(sigma) - log(q.dc_coef);
-    if (!(isfinite(q.ln_sigma_dc) && isfinite(q.F_coef) && q.dc_coef > 0.0 && isfinite(q.inv_sigma)))
-      return DC_ERANGE;
+    if (!(isfinite(q.ln_sigma_dc) && isfinite(q.F_coef) && q.dc_coef > 0.0)) return DC_ERANGE;
   }
   *p = q;
   return DC_OK;
@@ -127,13 +131,15 @@ static void reduced(int b, double x, double eta, double *G, double *Gx)
     return;
   }
   if (x < x_end) {
-    /* every summit pressed: one summit at the mean compression */
+    /* every summit pressed: one summit at the mean compression; where
+       that overflows, the limit g -> -pi/8 (the correction -> 0) */
     const double ub = DC_GWA_UB;
-    const double tau = exp(eta), shift = b == DC_GW_UNLOADING ? ub : 0.0;
+    const double tau = exp(eta), shift = b == DC_GW_UNLOADING ? ub : 0.0, d = -tau * x + shift;
+    if (!(d <= DBL_MAX)) { *G = -M_PI / 8.0; *Gx = 0.0; return; }
     double L, Lc, g, gd, g0, gd0;
     eta_interp(b, 0, j, ue, 1, &L, &Lc);
     summit_g(-tau * x_end + shift, &g0, &gd0);
-    summit_g(-tau * x + shift, &g, &gd);
+    summit_g(d, &g, &gd);
     const double q = x_end / x, q2 = q * q, corr = (-exp(L) - g0) * q2 * sqrt(sqrt(q2 * q2 * q2 / q));
     *G = g + corr;
     *Gx = -tau * gd - 2.75 * corr / x;
@@ -182,7 +188,8 @@ static int branch_force(const dc_gwa_table_pair *p, double lnR, double R, int b,
   const double eta = p->ln_sigma_dc - lnR / 3.0;
   const double h = -delta * p->inv_sigma;
   double x = h;
-  if (b == DC_GW_UNLOADING) x = h + p->ub * p->dc_coef * cbrt(R) * p->inv_sigma;   /* h - D */
+  /* h - D = -(delta + |delta_break|)/sigma, summed first: h and D may both overflow */
+  if (b == DC_GW_UNLOADING) x = -(delta - p->ub * p->dc_coef * cbrt(R)) * p->inv_sigma;
   double G, Gx;
   reduced(b, x, eta, &G, &Gx);
   const double Fs = p->F_coef * R;

@@ -2,13 +2,15 @@
    (dc/gw_rough_adhesive_table.h) against the exact c_core law
    (dc_gw_rough_adhesive minus dc_gw_rough_elliptic) at random points off
    the table's nodes, continuity, branches and hysteresis, pull-off force,
-   w = 0, and a random never-NaN sweep; prints ns per call. */
+   w = 0, magnitudes at the edges of the doubles, and a random never-NaN
+   sweep; prints ns per call. */
 #include "check.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive.h"
 #include "dc/gw_rough_adhesive_table.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/status.h"
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -183,6 +185,33 @@ static void test_branches(void)
   }
 }
 
+/* Magnitudes at the edges of the doubles (cases of test_fuzz.c). */
+static void test_extremes(void)
+{
+  dc_gwa_table_pair p;
+  double G, Gx, F, kn;
+  /* deep compression where tau x leaves the doubles: the limit G = -pi/8
+     (was DC_ERANGE), continuous with x = -1e300 */
+  CHECK(dc_gwa_table_reduced(DC_GW_LOADING, -1.7e308, 2.5, &G, &Gx) == DC_OK && G == -M_PI / 8.0 && Gx == 0.0);
+  CHECK(dc_gwa_table_reduced(DC_GW_UNLOADING, -1e300, 2.5, &G, &Gx) == DC_OK && fabs(G + M_PI / 8.0) < 1e-15);
+  /* unloading with h = -delta/sigma and D = |delta_break|/sigma both
+     beyond the doubles: h - D was inf - inf, a NaN cell index (a read
+     outside the table); every summit is attached, -pi/8 F_s each */
+  CHECK(dc_gwa_table_pair_init(1e-200, 1.0, 1e-300, 1.0, &p) == DC_OK);
+  CHECK(dc_gwa_table_force(&p, 1e200, DC_GW_UNLOADING, -1e100, &F, &kn) == DC_OK);
+  CHECK_REL(F, -8.0 * 1e200 * M_PI / 8.0, 1e-15, "unloading, h and D beyond the doubles");
+  CHECK(kn == 0.0);
+  /* w = 0 with 1/sigma beyond the doubles: DC_ERANGE (was DC_OK with an
+     infinite inv_sigma) */
+  CHECK(dc_gwa_table_pair_init(1e6, 0.0, DBL_TRUE_MIN, 1e3, &p) == DC_ERANGE);
+  /* 8 w / (pi E*) beyond the doubles, delta_c's coefficient not: was DC_ERANGE */
+  CHECK(dc_gwa_table_pair_init(1e-310, 1.0, 1e-6, 1.0, &p) == DC_OK);
+  CHECK_REL(p.dc_coef, 0.5 * exp(2.0 / 3.0 * (log(8.0 / M_PI) - log(1e-310))), 1e-13, "delta_c coefficient, E* = 1e-310");
+  /* 8 w beyond the doubles, 8 w n_asp not: was DC_ERANGE */
+  CHECK(dc_gwa_table_pair_init(1e5, DBL_MAX, 1e-6, 1e-3, &p) == DC_OK);
+  CHECK_REL(p.F_coef, 8.0 * (DBL_MAX * 1e-3), 1e-15, "8 w n_asp, w = DBL_MAX");
+}
+
 static void test_w_zero_and_domain(void)
 {
   dc_gwa_table_pair p;
@@ -289,6 +318,7 @@ int main(void)
   test_continuity();
   test_branches();
   test_w_zero_and_domain();
+  test_extremes();
   test_never_nan();
   bench();
   return check_summary("gw_rough_adhesive_table");

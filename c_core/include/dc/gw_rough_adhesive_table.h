@@ -104,7 +104,8 @@ int dc_gwa_table_check(double Estar, double w, double sigma, double n_asp, dc_pa
 
 /* Set-up per material pair (the parameters of dc_gw_rough_adhesive, with
    circular summits): DC_EDOM outside the domain of dc_gwa_table_check,
-   *p untouched. */
+   DC_ERANGE where 1/sigma, 8 w n_asp or delta_c's coefficient leaves the
+   doubles; *p untouched on both. */
 int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, dc_gwa_table_pair *p);
 
 /* G_b and dG/dx in the reduced variables (branch DC_GW_LOADING /
