@@ -3,6 +3,7 @@
 #include "dc/rolling_kalker.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
+#include "scaled_product.h"
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -430,6 +431,25 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
   if (!finite3(n) || !finite3(dv) || !finite3(dw)) return DC_EDOM;
   if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   if (!curvature_ok(ci, n) || !curvature_ok(cj, n)) return DC_EDOM;
+  /* velocities below 2^-900 scaled up first (exactly; V, slip and spin
+     scaled back): subnormal ones have too few bits for a direction */
+  const double vm = fmax(fmax(fabs(dv[0]), fmax(fabs(dv[1]), fabs(dv[2]))), fmax(fabs(dw[0]), fmax(fabs(dw[1]), fabs(dw[2]))));
+  if (vm > 0.0 && vm < 0x1p-900) {
+    double dv2[3], dw2[3];
+    for (int i = 0; i < 3; i++) {
+      dv2[i] = ldexp(dv[i], 600);
+      dw2[i] = ldexp(dw[i], 600);
+    }
+    dc_rolling_kin t;
+    const int st = kinematics(n, ci, cj, dv2, dw2, k_min, singular_ok, &t);
+    if (st != DC_OK) return st;
+    t.V = ldexp(t.V, -600);
+    if (t.V == 0.0) t.ex[0] = t.ex[1] = t.ex[2] = 0.0;   /* V underflowed */
+    for (int i = 0; i < 3; i++) t.slip[i] = ldexp(t.slip[i], -600);
+    t.spin = ldexp(t.spin, -600);
+    *k = t;
+    return DC_OK;
+  }
   if (ci->k1 == ci->k2 && cj->k1 == cj->k2) {
     /* both isotropic (spheres, a sphere on a plane): K_i + K_j = (k_i + k_j) I,
        no basis needed, the same Vbar */
@@ -448,7 +468,10 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
       const double spin = dot3(dw, n);
       if (!isfinite(V) || !finite3(s) || !isfinite(spin)) return DC_ERANGE;
       k->V = V;
-      for (int i = 0; i < 3; i++) k->ex[i] = V > 0.0 ? u[i] / V : 0.0;
+      /* a subnormal V has too few bits to divide by: u scaled up first */
+      const double sc = V < DBL_MIN ? 0x1p600 : 1.0;
+      const double l = sc == 1.0 ? V : hypot(hypot(u[0] * sc, u[1] * sc), u[2] * sc);
+      for (int i = 0; i < 3; i++) k->ex[i] = V > 0.0 ? u[i] * sc / l : 0.0;
       memcpy(k->slip, s, sizeof s);
       k->spin = spin;
       return DC_OK;
@@ -499,8 +522,11 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
   const double V = hypot(u1, u2);
   if (!isfinite(V) || !isfinite(s1) || !isfinite(s2)) return DC_ERANGE;
   double ex[3] = {0.0, 0.0, 0.0};
-  if (V > 0.0)
-    for (int i = 0; i < 3; i++) ex[i] = (u1 / V) * e1[i] + (u2 / V) * e2[i];
+  if (V > 0.0) {
+    /* a subnormal V has too few bits to divide by: the components scaled up first */
+    const double sc = V < DBL_MIN ? 0x1p600 : 1.0, w1 = u1 * sc, w2 = u2 * sc, l = sc == 1.0 ? V : hypot(w1, w2);
+    for (int i = 0; i < 3; i++) ex[i] = (w1 / l) * e1[i] + (w2 / l) * e2[i];
+  }
   if (!isfinite(spin)) return DC_ERANGE;
   k->V = V;
   memcpy(k->ex, ex, sizeof ex);
@@ -610,9 +636,14 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   }
   /* Eqs. 86-88: F = -G c^2 (...), c = (a b)^1/2 */
   const double cc = sqrt(a) * sqrt(b), Gc2 = rm->G * cc * cc;
+  const double fy = c.c22 * xi_y + cc * c.c23 * phi, mz = c.c23 * xi_y - cc * c.c33 * phi;
   double Fx = -Gc2 * c.c11 * xi_x;
-  double Fy = -Gc2 * (c.c22 * xi_y + cc * c.c23 * phi);
-  double Mz = Gc2 * cc * (c.c23 * xi_y - cc * c.c33 * phi);
+  double Fy = -Gc2 * fy;
+  double Mz = Gc2 * cc * mz;
+  /* G c^2 or G c^3 may overflow where the product does not */
+  if (!isfinite(Fx)) Fx = -dc_scaled_product(5, (const double[]){rm->G, cc, cc, c.c11, xi_x});
+  if (!isfinite(Fy) && isfinite(fy)) Fy = -dc_scaled_product(4, (const double[]){rm->G, cc, cc, fy});
+  if (!isfinite(Mz) && isfinite(mz)) Mz = dc_scaled_product(5, (const double[]){rm->G, cc, cc, cc, mz});
   const double muF = p->mu * patch->F_bound;
   if (!isfinite(muF) || !isfinite(xi_x) || !isfinite(xi_y) || !isfinite(phi)) return DC_ERANGE;
   double FL = sqrt(Fx * Fx + Fy * Fy);

@@ -8,8 +8,9 @@
    kinematics of rolling; the linear forces (Eqs. 86-88), spin,
    Vermeulen-Johnson against Kalker at small creepage, against Eqs. 92-93
    and saturating at mu F; i and j swapped; zero rolling speed; a random
-   sweep of edge inputs (status contract); parameter checks. Prints the
-   differences it measures. */
+   sweep of edge inputs (status contract); parameter checks; magnitudes at
+   the edges of the doubles and the domain's ends. Prints the differences
+   it measures. */
 #include "check.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/rolling_kalker.h"
@@ -739,6 +740,60 @@ static void test_sweep(void)
 }
 
 /* ------------------------------------------------------------------ */
+/* Magnitudes at the edges of the doubles, the domain's ends (cases of
+   test_fuzz.c). */
+static void test_extremes(void)
+{
+  /* subnormal velocities, spheres and an ellipsoid on a flat: the
+     direction was off unit and off the plane (too few bits); now that of
+     the same velocities 2^600 times larger */
+  const double n[3] = {0.6, 0.0, -0.8}, dv[3] = {3e-320, 1e-320, -2e-321}, dw[3] = {1e-318, -3e-319, 2e-319};
+  const dc_rolling_curvature sph = {100.0, 100.0, {0.0, 0.0, 0.0}}, ell = {300.0, 20.0, {0.8, 0.0, 0.6}};
+  const dc_rolling_curvature flat = {0.0, 0.0, {0.0, 0.0, 0.0}};
+  const dc_rolling_curvature *body[2] = {&sph, &ell};
+  for (int b = 0; b < 2; b++) {
+    dc_rolling_kin k, ks;
+    double dv2[3], dw2[3];
+    for (int i = 0; i < 3; i++) {
+      dv2[i] = ldexp(dv[i], 600);
+      dw2[i] = ldexp(dw[i], 600);
+    }
+    CHECK(dc_rolling_kinematics(n, body[b], &flat, dv, dw, &k) == DC_OK && k.V > 0.0);
+    CHECK(dc_rolling_kinematics(n, body[b], &flat, dv2, dw2, &ks) == DC_OK);
+    CHECK(fabs(dot3(k.ex, k.ex) - 1.0) < 1e-15 && fabs(dot3(k.ex, n)) < 1e-15);
+    CHECK(!memcmp(k.ex, ks.ex, sizeof k.ex) && k.V == ldexp(ks.V, -600));
+  }
+  /* a subnormal V from normal velocities (curvatures 1e300): ex was off unit */
+  const dc_rolling_curvature big = {1e300, 1e300, {0.0, 0.0, 0.0}}, bige = {1e300, 3e299, {0.8, 0.0, 0.6}};
+  const double dw1[3] = {1e-9, 3e-10, -2e-10};
+  dc_rolling_kin k;
+  CHECK(dc_rolling_kinematics(n, &big, &big, dv, dw1, &k) == DC_OK && k.V > 0.0 && k.V < DBL_MIN);
+  CHECK(fabs(dot3(k.ex, k.ex) - 1.0) < 1e-15);
+  CHECK(dc_rolling_kinematics(n, &bige, &big, dv, dw1, &k) == DC_OK && k.V > 0.0 && k.V < DBL_MIN);
+  CHECK(fabs(dot3(k.ex, k.ex) - 1.0) < 1e-15);
+  /* G c^3 beyond the doubles, the spin moment not (c = 1e142, xi_y =
+     1e-278): was DC_ERANGE */
+  const double nz[3] = {0.0, 0.0, 1.0};
+  const dc_rolling_material rm = mat(0.25);
+  const dc_rolling_params p = {0.5, 1e-3, DC_ROLLING_KALKER};
+  dc_patch pa = {1e142, 1e142, {0.0, 0.0, 0.0}, 1e274, 1e274, 1.0};
+  dc_rolling_kin kk = kin_of(1e290, 0.0, 1e-278, 0.0);
+  dc_rolling_out o;
+  CHECK(dc_rolling_force(&p, &rm, &pa, nz, &kk, &o) == DC_OK);
+  CHECK_REL(o.Mz, rm.circle[2] * 1e-278 * rm.G * 1e142 * 1e142 * 1e142, 1e-14, "spin moment, G c^3 beyond the doubles");
+  /* the documented domain's ends: b >= 1e-150 a (the axis ratios of the
+     coefficients), s0 >= 2/DBL_MAX */
+  pa = (dc_patch){1e-3, 1e-150 * 1e-3, {1.0, 0.0, 0.0}, 1.0, 1.0, 1.0};
+  kk = kin_of(1.0, 0.0, 1e-3, 0.0);
+  CHECK(dc_rolling_force(&p, &rm, &pa, nz, &kk, &o) == DC_OK);
+  pa.b = nextafter(pa.b, 0.0);
+  CHECK(dc_rolling_force(&p, &rm, &pa, nz, &kk, &o) == DC_EDOM);
+  const dc_mindlin_pair m = {1e-310, 2.5e-311};
+  dc_rolling_material r2;
+  dc_param_error e;
+  CHECK(dc_rolling_material_init(&m, &r2, &e) == DC_EDOM && !strcmp(e.name, "youngsModulus"));
+}
+
 static void test_params(void)
 {
   dc_param_error e;
@@ -777,5 +832,6 @@ int main(void)
   test_zero_speed();
   test_sweep();
   test_params();
+  test_extremes();
   return check_summary("test_rolling_kalker");
 }

@@ -155,7 +155,8 @@ typedef struct {
 /* From the compliance sums of dc_mindlin_pair_init (s0 > 0). DC_EDOM with
    err naming "poissonsRatio" when nu = s1/s0 is outside [0, 0.5] (Kalker's
    coefficients are tabulated there), or "youngsModulus" when s0 is not
-   positive and finite; rm untouched then. */
+   positive and finite or is below 2/DBL_MAX (G = 2/s0 overflows); rm
+   untouched then. */
 int dc_rolling_material_init(const dc_mindlin_pair *m, dc_rolling_material *rm, dc_param_error *err);
 
 /* Kalker's creep coefficients. */
@@ -234,7 +235,8 @@ typedef struct {
 
 /* Creep force and spin moment of one contact (Eqs. 86-88, 92-93): p
    checked, rm from dc_rolling_material_init, patch of this step (a >= b,
-   b > 0 when formed, F_bound >= 0, unit axis in the plane for a > b), n
+   b > 0 and b >= 1e-150 a when formed: the axis ratios of
+   dc_kalker_coefficients; F_bound >= 0, unit axis in the plane for a > b), n
    the unit normal (as for the kinematics), k from dc_rolling_kinematics.
    Not formed, a == 0 or V <= v_min: zeros, rolling = 0, DC_OK. DC_EDOM for
    an input out of its domain or non-finite; DC_ERANGE when a result
