@@ -1,14 +1,12 @@
 /* The status contract of dc/status.h for the public c_core functions, by a
-   seeded fuzz (every function of the headers included below; the newer
-   headers classical_normal.h, classical_tangential.h, gw_rough_plastic.h,
-   gw_rough_table.h, gw_rough_adhesive_table.h and rolling_kalker.h are not
-   covered here yet: their own unit tests run random and edge-input sweeps
-   against the same promises): random and extreme arguments (log-uniform magnitudes over
+   seeded fuzz (every function of the headers included below): random and
+   extreme arguments (log-uniform magnitudes over
    1e-320 .. 1e308 of either sign, 0, -0, subnormals, DBL_MAX, +-inf, NaN,
    values at and a few ulps around the domain edges) mixed with typical
    values inside each domain (each call draws how many of its arguments are
-   wild), 1e5 calls per function (the full GW solver on small m only, see
-   fuzz_gw_solve). For every call of a function that returns a status:
+   wild), 1e5 calls per function (fewer where one call is expensive: the
+   full GW solver on small m only, see fuzz_gw_solve; N_GWP, N_TABLE_INIT,
+   N_ROLL_MAT, N_KALKER_NU). For every call of a function that returns a status:
    - the status is a dc_status value;
    - DC_OK: every output double is finite (outputs are filled with a NaN
      byte pattern before the call, so an output left unwritten fails too);
@@ -19,15 +17,26 @@
      domain never give DC_EDOM (where the domain is simple to state; a
      sufficient subset of it where it is not);
    - where a bound on the true result is cheap, DC_ERANGE only when it can
-     overflow.
+     overflow (or underflow, where a result can).
+   Exceptions the headers document: the parameter checks and inits fill
+   their dc_param_error on an error; dc_gw_plastic_summit's w1, w2 may be 0
+   or +inf on DC_OK; R_max = +inf is dc_rolling_kinematics_capped's "no cap".
    Struct inputs made by a constructor (dc_hertz_geom, dc_feng_law,
-   dc_jkr_geom, dc_gw_solver) come from that constructor under the same
-   fuzz; plain-data inputs documented as "any content" (dc_jkr_hint) and the
-   fields of dc_jkr_state read by dc_dissip_adhesive_state are fuzzed
-   directly. Functions without a status (void, double) are checked for what
-   their headers promise. Prints the calls and statuses per function and
-   the time taken. */
+   dc_jkr_geom, dc_gw_solver, dc_classical_normal, dc_classical_tangential,
+   dc_gw_plastic_summit, dc_gw_table_law, dc_gw_table_pair,
+   dc_gwa_table_pair, dc_rolling_material) come from that constructor under
+   the same fuzz; plain-data inputs documented as "any content"
+   (dc_jkr_hint) and the fields of dc_jkr_state read by
+   dc_dissip_adhesive_state are fuzzed directly, as are the per-contact
+   histories within the content their headers allow (the classical laws',
+   gw_rough_adhesive_table's) and the plain inputs of gw_rough_plastic.h and
+   rolling_kalker.h. The parameter checks must name a bad field with its
+   value. Functions without a status (void, double, int) are checked for
+   what their headers promise. Prints the calls and statuses per function
+   and the time taken. */
 #include "check.h"
+#include "dc/classical_normal.h"
+#include "dc/classical_tangential.h"
 #include "dc/cmd_tangential.h"
 #include "dc/contract.h"
 #include "dc/curvature.h"
@@ -38,11 +47,15 @@
 #include "dc/gw_integrals.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive.h"
+#include "dc/gw_rough_adhesive_table.h"
+#include "dc/gw_rough_plastic.h"
+#include "dc/gw_rough_table.h"
 #include "dc/gw_solver.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/jamari_ep.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/mindlin.h"
+#include "dc/rolling_kalker.h"
 #include "dc/root_find.h"
 #include "dc/rough_tangential.h"
 #include "dc/status.h"
@@ -64,7 +77,7 @@ typedef struct {
   long nwhy[8];
 } fz_fn;
 
-static fz_fn fz_all[96];
+static fz_fn fz_all[128];
 static int fz_n;
 static struct timespec fz_t0;
 
@@ -136,8 +149,11 @@ static const char *fz_verdict(fz_fn *f, int st, int in_bad, int in_dom, int unto
     else fz_fail((f), (why), -1, __VA_ARGS__);                                                \
   } while (0)
 
-/* Sentinel: a NaN byte pattern. */
-static unsigned char fz_ff[4096];
+/* Sentinel: a NaN byte pattern (as large as the largest output, the
+   tabulated law of dc_gw_table_pair). */
+static unsigned char fz_ff[8192];
+_Static_assert(sizeof(dc_gw_table_pair) <= sizeof fz_ff && sizeof(dc_rolling_material) <= sizeof fz_ff,
+               "fz_ff smaller than an output");
 #define SENTINEL(x) memset(&(x), 0xFF, sizeof(x))
 #define UNTOUCHED(x) (memcmp(&(x), fz_ff, sizeof(x)) == 0)
 
@@ -298,6 +314,7 @@ static void unit_vector(double n[3])
 }
 
 static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static double max_abs3(const double *x) { return fmax(fabs(x[0]), fmax(fabs(x[1]), fabs(x[2]))); }
 
 static void fuzz_tangent_basis(void)
 {
@@ -1895,6 +1912,1420 @@ static void fuzz_root_find(void)
 }
 
 /* ---------------------------------------------------------------- */
+/* Checks of a parameter struct: the error report names a bad field.  */
+
+typedef struct {
+  const char *name;  /* as the check reports it */
+  double value;
+  int bad;           /* read by the check (the settings select it) and outside its range */
+} fz_field;
+
+/* err names one of the bad fields, with its value (where the header does
+   not give the order of the fields, any bad one). */
+static int err_names(const dc_param_error *e, const fz_field *fl, int n)
+{
+  if (!e->name || !e->range) return 0;
+  for (int i = 0; i < n; i++)
+    if (fl[i].bad && !strcmp(e->name, fl[i].name) && !memcmp(&e->value, &fl[i].value, sizeof(double))) return 1;
+  return 0;
+}
+
+/* one field: its name, value, whether the settings have it read, and its range */
+typedef struct {
+  const char *name;
+  double v;
+  int used, ok;
+} fz_spec;
+
+/* The fields from their specs; inside: no field bad; nonfinite: a read
+   double (from index first_double on) is not finite. */
+static int fz_fields(const fz_spec *t, int n, int first_double, fz_field *fl, int *nonfinite)
+{
+  int inside = 1;
+  *nonfinite = 0;
+  for (int i = 0; i < n; i++) {
+    fl[i] = (fz_field){t[i].name, t[i].v, t[i].used && !t[i].ok};
+    inside &= !fl[i].bad;
+    if (i >= first_double && t[i].used && !isfinite(t[i].v)) *nonfinite = 1;
+  }
+  return inside;
+}
+
+static int pos_fin(double x) { return x > 0.0 && x <= DBL_MAX; }
+static int nonneg_fin(double x) { return x >= 0.0 && x <= DBL_MAX; }
+
+/* ---------------------------------------------------------------- */
+/* classical_normal.h                                                 */
+
+enum { CN_NF = 11 };
+
+/* The fields of p as the header documents them (unused fields are not
+   read; the settings first, then the doubles). */
+static int cn_fields(const dc_classical_normal_params *p, fz_field fl[CN_NF], int *nonfinite)
+{
+  const int law_ok = p->law >= 0 && p->law <= 3, hz = p->law == DC_CLASSICAL_HERTZ, lin = law_ok && !hz;
+  const int st_ok = p->stiffness >= 0 && p->stiffness <= 3 &&
+                    !(p->law == DC_CLASSICAL_HLS_VARIABLE && p->stiffness == DC_CLASSICAL_K_DURATION);
+  const int given = lin && st_ok && p->stiffness == DC_CLASSICAL_K_GIVEN, matched = lin && st_ok && !given;
+  const int uses_e = p->law == DC_CLASSICAL_LSD || p->law == DC_CLASSICAL_HLS_CONSTANT ||
+                     (hz && (p->damping == DC_DAMPING_RESTITUTION || p->damping == DC_DAMPING_TSUJI));
+  const fz_spec t[CN_NF] = {
+    {"classicalNormal", p->law, 1, law_ok},
+    {"limitForce", p->limit, 1, p->limit == 0 || p->limit == 1},
+    {"classicalStiffness", p->stiffness, lin, st_ok},
+    {"damping", p->damping, hz, p->damping >= 0 && p->damping <= 4},
+    {"kn", p->kn, given, pos_fin(p->kn)},
+    {"youngsModulus", p->Estar, hz || matched, pos_fin(p->Estar)},
+    {"characteristicVelocity", p->v_char, matched, pos_fin(p->v_char)},
+    {"viscoelasticTime", p->A, hz && p->damping == DC_DAMPING_VISCOELASTIC, nonneg_fin(p->A)},
+    {"kuwabaraKonoDamping", p->eta_kk, hz && p->damping == DC_DAMPING_KUWABARA_KONO, nonneg_fin(p->eta_kk)},
+    {"coefficientRestitution", p->e, uses_e, p->e > 0.0 && p->e <= 1.0},
+    {"unloadingStiffnessSlope", p->S, p->law == DC_CLASSICAL_HLS_VARIABLE, nonneg_fin(p->S)}};
+  return fz_fields(t, CN_NF, 4, fl, nonfinite);
+}
+
+static dc_classical_normal_params cn_params(void)
+{
+  dc_classical_normal_params p;
+  p.law = AI(UI(4));
+  p.stiffness = AI(UI(4));
+  p.damping = AI(UI(5));
+  p.limit = AI(UI(2));
+  p.Estar = A(U() < 0.7 ? fz_log(1e5, 1e12) : fz_pos());
+  p.kn = A(U() < 0.7 ? fz_log(1e2, 1e10) : fz_pos());
+  p.v_char = A(U() < 0.7 ? fz_log(1e-3, 1e2) : fz_pos());
+  p.e = A(U() < 0.6 ? U() : U() < 0.5 ? fz_log(1e-320, 1.0) : PICK(1.0, 0.0, 0.5));
+  p.A = A(U() < 0.7 ? fz_log(1e-12, 1e-3) : U() < 0.5 ? 0.0 : fz_pos());
+  p.eta_kk = A(U() < 0.7 ? fz_log(1e-2, 1e6) : U() < 0.5 ? 0.0 : fz_pos());
+  p.S = A(U() < 0.7 ? fz_log(1e-2, 1e8) : U() < 0.5 ? 0.0 : fz_pos());
+  return p;
+}
+
+#define CN_FMT "law %d stiffness %d damping %d limit %d E* %.17g kn %.17g v %.17g e %.17g A %.17g eta %.17g S %.17g"
+#define CN_ARGS(p) (p).law, (p).stiffness, (p).damping, (p).limit, (p).Estar, (p).kn, (p).v_char, (p).e, (p).A, \
+                   (p).eta_kk, (p).S
+
+static dc_classical_normal cnpool[64];
+static int ncn;
+
+/* log of K (LSD, HLS: K_L; HERTZ: K_HZ) */
+static double cn_lK(const dc_classical_normal *m, double R, double meff)
+{
+  if (m->p.law == DC_CLASSICAL_HERTZ) return lg(4.0 / 3.0) + lg(m->p.Estar) + 0.5 * lg(R);
+  return lg(m->kc) + (m->matched ? 0.2 * (2.0 * lg(R) + lg(meff)) : 0.0);
+}
+
+/* log of a bound on a step's results and intermediates: K, K_U, the
+   elastic force and stiffness, gamma and gamma |ddelta|, the area */
+static double cn_bound(const dc_classical_normal *m, double R, double meff, double d, double dd, double dmax)
+{
+  const dc_classical_normal_params *p = &m->p;
+  const double lK = cn_lK(m, R, meff);
+  double b = fmax(lK, lg(M_PI) + lg(R) + lg(d)), lgam = -INFINITY;
+  if (p->law == DC_CLASSICAL_HERTZ) {
+    const double lS = lg(2.0) + lg(p->Estar) + 0.5 * (lg(R) + lg(d));
+    b = fmax(b, fmax(lS, lS + lg(d)));
+    switch (p->damping) {
+    case DC_DAMPING_RESTITUTION: lgam = lg(2.0) + 0.5 * (lS + lg(meff)); break;
+    case DC_DAMPING_VISCOELASTIC: lgam = lg(m->dcoef) + lS; break;
+    case DC_DAMPING_KUWABARA_KONO: lgam = lg(m->dcoef) + 0.5 * lg(d); break;
+    case DC_DAMPING_TSUJI: lgam = lg(m->dcoef) + 0.5 * (lS + lg(meff)); break;
+    default: break;
+    }
+  } else {
+    const double ldm = lg(fmax(d, dmax));
+    double lKU = lK;
+    if (p->law == DC_CLASSICAL_HLS_CONSTANT) lKU += lg(m->ku_ratio);
+    if (p->law == DC_CLASSICAL_HLS_VARIABLE) lKU += lg(2.0) + fmax(0.0, lg(p->S) + ldm);
+    b = fmax(b, fmax(lKU, lKU + ldm + lg(2.0)));
+    if (p->law == DC_CLASSICAL_LSD) lgam = lg(m->zeta) + 0.5 * (lg(meff) + lK);
+  }
+  return fmax(b, fmax(lgam, lgam + lg(dd)));
+}
+
+static void fuzz_classical_normal(void)
+{
+  /* check and init on the same parameters */
+  fz_fn *f = fz_new("dc_classical_normal_check");
+  fz_fn *fi = fz_new("dc_classical_normal_init");
+  fi->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_classical_normal_params p = cn_params();
+    fz_field fl[CN_NF];
+    int bad;
+    const int inside = cn_fields(&p, fl, &bad);
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_classical_normal_check(&p, &err);
+    FZ_CHECK(f, st, bad, inside, 1, 1, CN_FMT, CN_ARGS(p));
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) && (st == DC_OK ? UNTOUCHED(err) : err_names(&err, fl, CN_NF)),
+              "wrong status or error report", CN_FMT ": status %d", CN_ARGS(p), st);
+    fi->seconds -= fz_now();
+    dc_classical_normal m;
+    SENTINEL(m);
+    SENTINEL(err);
+    const int si = dc_classical_normal_init(&p, &m, &err);
+    FZ_CHECK(fi, si, bad, inside, UNTOUCHED(m), ALLFIN(m.kc, m.zeta, m.dcoef, m.ku_ratio) && m.zeta >= 0.0,
+             CN_FMT, CN_ARGS(p));
+    /* DC_EDOM as the check; DC_ERANGE only where kc = c (v E*^2)^2/5
+       (c from 0.14 to 1.2 (1 + x^2), x = -ln e / pi) or 1/e^2 can leave
+       the range of doubles; both with the error report */
+    const int lsd = p.law == DC_CLASSICAL_LSD, matched = inside && p.law != DC_CLASSICAL_HERTZ &&
+                                                        p.stiffness != DC_CLASSICAL_K_GIVEN;
+    const double x = lsd ? -log(p.e) / M_PI : 0.0, lq = 0.4 * lg(p.v_char) + 0.8 * lg(p.Estar);
+    const int range = (matched && (lq + log(1.2 * (1.0 + x * x)) > LOG_MAX - 1.0 || lq + log(0.1) < log(DBL_TRUE_MIN) + 1.0)) ||
+                      (inside && p.law == DC_CLASSICAL_HLS_CONSTANT && -2.0 * lg(p.e) > LOG_MAX - 1.0);
+    FZ_EXPECT(fi, (si == DC_EDOM) == (st == DC_EDOM) && (si != DC_ERANGE || range) &&
+                      (si == DC_OK ? UNTOUCHED(err) : err.name && err.range),
+              "not the check's status, DC_ERANGE for representable constants, or no error report",
+              CN_FMT ": status %d", CN_ARGS(p), si);
+    if (si == DC_OK) {
+      if (ncn < 64) cnpool[ncn++] = m;
+      else cnpool[UI(64)] = m;
+    }
+    fi->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the step: chains of calls on one history (a contact) with one model,
+     radius and mass, overlaps wandering in and out of contact, now and
+     then wild inputs or any history (its domain: delta_max >= 0 finite) */
+  f = fz_new("dc_classical_normal_step");
+  fz_fn *fs = fz_new("dc_classical_normal_stiffness");
+  fs->seconds = 0.0;
+  dc_classical_normal_state h = {0.0};
+  const dc_classical_normal *m = &cnpool[0];
+  double R0 = 1e-3, m0 = 1e-6, x = 0.0, sc = 1e-6;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) {   /* a new contact */
+      h.delta_max = 0.0;
+      m = &cnpool[UI(ncn)];
+      R0 = U() < 0.7 ? fz_log(1e-6, 1.0) : fz_pos();
+      m0 = U() < 0.7 ? fz_log(1e-12, 1e3) : fz_pos();
+      sc = R0 * fz_log(1e-12, 1e-1);
+      x = 0.0;
+    }
+    if (U() < 0.003) h.delta_max = U() < 0.5 ? fz_wild() : fz_wide();
+    x += sc * fz_sign(fz_log(1e-3, 1.0));
+    if (U() < 0.02) x = -x;
+    const double R = A(R0), meff = A(m0), d = A(x), dd = A(U() < 0.8 ? fz_sign(fz_log(1e-4, 1e2)) : PICK(0.0, -0.0));
+    const int bad = !ALLFIN(R, meff, d, dd, h.delta_max);
+    const int dom = !bad && R > 0.0 && meff > 0.0 && h.delta_max >= 0.0;
+    const dc_classical_normal_state h0 = h;
+    dc_classical_normal_out o;
+    SENTINEL(o);
+    const int st = dc_classical_normal_step(m, R, meff, d, dd, &h, &o);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h),
+             contact_ok(&o.c) && ALLFIN(o.gamma, o.F, o.K, h.delta_max),
+             CN_FMT " R %.17g meff %.17g delta %.17g ddelta %.17g delta_max %.17g", CN_ARGS(m->p), R, meff, d, dd,
+             h0.delta_max);
+    if (st == DC_OK && dom) {
+      /* sign, formed, the history (HLS: the largest overlap; the others 0),
+         limitForce; delta <= 0 gives zeros; HLS never above K_L delta_max */
+      const int formed = d > 0.0, hls = m->p.law >= DC_CLASSICAL_HLS_CONSTANT;
+      int pr = o.c.formed == formed && o.c.F >= 0.0 && o.c.kn >= 0.0 && o.c.area >= 0.0 && o.c.a == o.c.b &&
+               o.c.a >= 0.0 && o.c.F_bound == o.c.F && o.gamma >= 0.0 && (!m->p.limit || o.F >= 0.0) &&
+               h.delta_max == (formed && hls ? fmax(h0.delta_max, d) : 0.0);
+      if (!formed)
+        pr &= o.c.F == 0.0 && o.c.kn == 0.0 && o.c.area == 0.0 && o.c.a == 0.0 && o.gamma == 0.0 && o.F == 0.0 &&
+              o.K == 0.0;
+      else if (hls && isfinite(o.K * h.delta_max))
+        pr &= o.c.F <= o.K * h.delta_max * (1.0 + 1e-14);
+      FZ_EXPECT(f, pr, "not the law's promises (sign, formed, history, limit, unloading line)",
+                CN_FMT " R %.17g meff %.17g delta %.17g ddelta %.17g delta_max %.17g: F %.17g total %.17g gamma %.17g",
+                CN_ARGS(m->p), R, meff, d, dd, h0.delta_max, o.c.F, o.F, o.gamma);
+    }
+    /* DC_ERANGE where a result can overflow, or a matched K underflow */
+    FZ_EXPECT(f, st != DC_ERANGE || cn_bound(m, R, meff, d, dd, h0.delta_max) > LOG_MAX - 3.0 ||
+                     (m->matched && cn_lK(m, R, meff) < log(DBL_TRUE_MIN) + 3.0),
+              "DC_ERANGE for representable results", CN_FMT " R %.17g meff %.17g delta %.17g ddelta %.17g delta_max %.17g",
+              CN_ARGS(m->p), R, meff, d, dd, h0.delta_max);
+    if (st != DC_OK && U() < 0.5) h.delta_max = 0.0;
+    /* the stiffness alone: the step's K */
+    fs->seconds -= fz_now();
+    double K;
+    SENTINEL(K);
+    const int sk = dc_classical_normal_stiffness(m, R, meff, &K);
+    FZ_CHECK(fs, sk, !ALLFIN(R, meff), ALLFIN(R, meff) && R > 0.0 && meff > 0.0, UNTOUCHED(K), isfinite(K) && K > 0.0,
+             CN_FMT " R %.17g meff %.17g", CN_ARGS(m->p), R, meff);
+    const double lK = cn_lK(m, R, meff);
+    FZ_EXPECT(fs, sk != DC_ERANGE || lK > LOG_MAX - 1.0 || lK < log(DBL_TRUE_MIN) + 2.0, "DC_ERANGE for a representable K",
+              CN_FMT " R %.17g meff %.17g", CN_ARGS(m->p), R, meff);
+    if (sk == DC_OK && st == DC_OK && d > 0.0)
+      FZ_EXPECT(fs, K == o.K, "not the step's K", CN_FMT " R %.17g meff %.17g: %.17g vs %.17g", CN_ARGS(m->p), R, meff, K,
+                o.K);
+    fs->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the closed forms of one collision */
+  f = fz_new("dc_classical_lsd_collision");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double K = A(U() < 0.6 ? fz_log(1e2, 1e10) : fz_pos()), meff = A(U() < 0.6 ? fz_log(1e-12, 1e3) : fz_pos());
+    const double v0 = A(U() < 0.6 ? fz_log(1e-3, 1e2) : fz_pos());
+    /* eta: a fraction q of the critical 2 (m K)^1/2 (in logs: no overflow) */
+    const double lcrit = lg(2.0) + 0.5 * (lg(K) + lg(meff));
+    const double q = U() < 0.1 ? 0.0 : U() < 0.6 ? U() : U() < 0.5 ? 1.0 - fz_log(1e-16, 0.1) : fz_log(0.5, 2.0);
+    const double eta = A(q > 0.0 ? exp(lcrit + log(q)) : 0.0);
+    const int limit = AI(UI(2));
+    const int bad = !ALLFIN(K, eta, meff, v0);
+    const double lq = lg(eta) - lcrit;   /* eta over critical */
+    /* underdamped, with a margin for the rounding of the test (wide where
+       (m K)^1/2 is subnormal) */
+    const int dom = !bad && K > 0.0 && meff > 0.0 && v0 > 0.0 && eta >= 0.0 && (limit == 0 || limit == 1) &&
+                    (lq < -0.1 || (lq < -1e-9 && lcrit > log(DBL_MIN) + 2.0));
+    dc_classical_collision c;
+    SENTINEL(c);
+    const int st = dc_classical_lsd_collision(K, eta, meff, v0, limit, &c);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(c),
+             FIN(c) && c.Tc > 0.0 && c.dmax >= 0.0 && c.e >= 0.0 && c.e <= 1.0 && c.Fmax == 0.0 && c.dres == 0.0,
+             "K %.17g eta %.17g meff %.17g v0 %.17g limit %d", K, eta, meff, v0, limit);
+    /* Tc <= pi/W, dmax <= v0/W, W = (K/m)^1/2 (1 - (eta/crit)^2)^1/2 */
+    const double lW = 0.5 * (lg(K) - lg(meff) + log1p(-exp(2.0 * lq)));
+    FZ_EXPECT(f, st != DC_ERANGE || fmax(lg(M_PI), lg(v0)) - lW > LOG_MAX - 2.0, "DC_ERANGE for representable figures",
+              "K %.17g eta %.17g meff %.17g v0 %.17g limit %d", K, eta, meff, v0, limit);
+  }
+  fz_done(f);
+  f = fz_new("dc_classical_hertz_collision");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double K = A(U() < 0.6 ? fz_log(1e5, 1e12) : fz_pos()), meff = A(U() < 0.6 ? fz_log(1e-12, 1e3) : fz_pos());
+    const double v0 = A(U() < 0.6 ? fz_log(1e-3, 1e2) : fz_pos());
+    const int bad = !ALLFIN(K, meff, v0);
+    dc_classical_collision c;
+    SENTINEL(c);
+    const int st = dc_classical_hertz_collision(K, meff, v0, &c);
+    FZ_CHECK(f, st, bad, !bad && K > 0.0 && meff > 0.0 && v0 > 0.0, UNTOUCHED(c),
+             FIN(c) && c.Tc > 0.0 && c.dmax > 0.0 && c.e == 1.0 && c.Fmax >= 0.0 && c.dres == 0.0,
+             "K_HZ %.17g meff %.17g v0 %.17g", K, meff, v0);
+    /* dmax = (5/4 m v0^2 / K_HZ)^2/5, Tc = 2.94 dmax / v0, Fmax = K_HZ dmax^3/2 */
+    const double ld = 0.4 * (log(1.25) + lg(meff) + 2.0 * lg(v0) - lg(K));
+    const double b = fmax(ld, fmax(ld + log(2.95) - lg(v0), lg(K) + 1.5 * ld));
+    FZ_EXPECT(f, st != DC_ERANGE || b > LOG_MAX - 1.0 || ld < log(DBL_MIN) + 1.0, "DC_ERANGE for representable figures",
+              "K_HZ %.17g meff %.17g v0 %.17g", K, meff, v0);
+  }
+  fz_done(f);
+  f = fz_new("dc_classical_hls_collision");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int law = AI(DC_CLASSICAL_HLS_CONSTANT + UI(2));
+    const double K = A(U() < 0.6 ? fz_log(1e2, 1e10) : fz_pos()), meff = A(U() < 0.6 ? fz_log(1e-12, 1e3) : fz_pos());
+    const double v0 = A(U() < 0.6 ? fz_log(1e-3, 1e2) : fz_pos());
+    const double xv = A(law == DC_CLASSICAL_HLS_CONSTANT ? (U() < 0.7 ? U() : PICK(1.0, 0.0, 1e-300))
+                                                          : (U() < 0.7 ? fz_log(1e-2, 1e8) : U() < 0.3 ? 0.0 : fz_pos()));
+    const int bad = !ALLFIN(K, xv, meff, v0);
+    const int dom = !bad && K > 0.0 && meff > 0.0 && v0 > 0.0 &&
+                    (law == DC_CLASSICAL_HLS_CONSTANT ? xv > 0.0 && xv <= 1.0 : law == DC_CLASSICAL_HLS_VARIABLE && xv >= 0.0);
+    dc_classical_collision c;
+    SENTINEL(c);
+    const int st = dc_classical_hls_collision(law, K, xv, meff, v0, &c);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(c),
+             FIN(c) && c.Tc >= 0.0 && c.dmax >= 0.0 && c.e > 0.0 && c.e <= 1.0 && c.Fmax >= 0.0 && c.dres >= 0.0 &&
+                 c.dres <= c.dmax && (law != DC_CLASSICAL_HLS_CONSTANT || c.e == xv),
+             "law %d K_L %.17g x %.17g meff %.17g v0 %.17g", law, K, xv, meff, v0);
+    /* Tc <= pi (m/K)^1/2, dmax = v0 (m/K)^1/2, Fmax = v0 (m K)^1/2 */
+    const double lw = 0.5 * (lg(meff) - lg(K));
+    const double b = fmax(fmax(lg(M_PI) + lw, lg(v0) + lw), lg(v0) + 0.5 * (lg(meff) + lg(K)));
+    FZ_EXPECT(f, st != DC_ERANGE || b > LOG_MAX - 2.0, "DC_ERANGE for representable figures",
+              "law %d K_L %.17g x %.17g meff %.17g v0 %.17g", law, K, xv, meff, v0);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* classical_tangential.h                                             */
+
+enum { CT_NF = 11 };
+
+static int ct_fields(const dc_classical_tangential_params *p, fz_field fl[CT_NF], int *nonfinite)
+{
+  const int law = p->law, law_ok = law >= 0 && law <= 9;
+  const int uses_st = law == DC_CT_SPRING_SLIDING || law == DC_CT_SPRING_DASHPOT_SLIDING || law == DC_CT_INCREMENTAL;
+  const int st_ok = p->stiffness >= 0 && p->stiffness <= 2;
+  const int uses_d = law == DC_CT_SPRING_DASHPOT_SLIDING || law == DC_CT_DI_RENZO;
+  const int gstar = (uses_st && st_ok && p->stiffness != DC_CT_KT_GIVEN) || law == DC_CT_DI_RENZO ||
+                    law == DC_CT_LANGSTON || law == DC_CT_ZHENG || law == DC_CT_TSUJI;
+  const fz_spec t[CT_NF] = {
+    {"classicalTangential", law, 1, law_ok},
+    {"classicalTangentialStiffness", p->stiffness, uses_st, st_ok},
+    {"classicalTangentialDamping", p->damping, uses_d, p->damping >= 0 && p->damping <= 3},
+    {"coefficientFriction", p->mu, law_ok && law != DC_CT_VISCOUS, nonneg_fin(p->mu)},
+    {"kt", p->kt, uses_st && p->stiffness == DC_CT_KT_GIVEN, pos_fin(p->kt)},
+    {"youngsModulus", p->Gstar, gstar, pos_fin(p->Gstar)},
+    {"youngsModulus", p->Estar, uses_st && p->stiffness == DC_CT_KT_RATIO, pos_fin(p->Estar)},
+    {"gammat", p->gammat, law == DC_CT_VISCOUS || law == DC_CT_VISCOUS_SLIDING || (uses_d && p->damping == DC_CT_DAMP_GIVEN),
+     nonneg_fin(p->gammat)},
+    {"coefficientRestitutionTangential", p->e_t, uses_d && p->damping == DC_CT_DAMP_RESTITUTION,
+     p->e_t >= 0.0 && p->e_t <= 1.0},
+    {"langstonDamping", p->eta_l, law == DC_CT_LANGSTON, nonneg_fin(p->eta_l)},
+    {"tangentialViscoelasticTime", p->t_visc, law == DC_CT_ZHENG, nonneg_fin(p->t_visc)}};
+  return fz_fields(t, CT_NF, 3, fl, nonfinite);
+}
+
+static dc_classical_tangential_params ct_params(void)
+{
+  dc_classical_tangential_params p;
+  p.law = AI(UI(10));
+  p.stiffness = AI(UI(3));
+  p.damping = AI(UI(4));
+  p.mu = A(U() < 0.8 ? 2.0 * U() : PICK(0.0, 1.0));
+  p.kt = A(U() < 0.7 ? fz_log(1e2, 1e9) : fz_pos());
+  p.gammat = A(U() < 0.7 ? fz_log(1e-6, 1e2) : U() < 0.5 ? 0.0 : fz_pos());
+  p.e_t = A(U() < 0.7 ? U() : PICK(0.0, 1.0));
+  p.Gstar = A(U() < 0.7 ? fz_log(1e6, 1e11) : fz_pos());
+  p.Estar = A(U() < 0.7 ? fz_log(1e6, 1e11) : fz_pos());
+  p.eta_l = A(U() < 0.7 ? fz_log(1e-3, 2.0) : U() < 0.5 ? 0.0 : fz_pos());
+  p.t_visc = A(U() < 0.7 ? fz_log(1e-12, 1e-3) : U() < 0.5 ? 0.0 : fz_pos());
+  return p;
+}
+
+#define CT_FMT "law %d stiffness %d damping %d mu %.17g kt %.17g gammat %.17g e_t %.17g G* %.17g E* %.17g eta_l %.17g A_t %.17g"
+#define CT_ARGS(p) (p).law, (p).stiffness, (p).damping, (p).mu, (p).kt, (p).gammat, (p).e_t, (p).Gstar, (p).Estar, \
+                   (p).eta_l, (p).t_visc
+
+static dc_classical_tangential ctpool[64];
+static int nct;
+
+/* log of the spring stiffness of a law (-inf: none) */
+static double ct_lK(const dc_classical_tangential *m, const dc_patch *pa, const dc_classical_tangential_contact *c)
+{
+  const dc_classical_tangential_params *p = &m->p;
+  switch (p->law) {
+  case DC_CT_SPRING_SLIDING: case DC_CT_SPRING_DASHPOT_SLIDING: case DC_CT_INCREMENTAL:
+    return p->stiffness == DC_CT_KT_GIVEN ? lg(p->kt) : p->stiffness == DC_CT_KT_RATIO ? lg(m->ratio) + lg(c->kn)
+                                                                                        : lg(8.0) + lg(p->Gstar) + lg(pa->a);
+  case DC_CT_DI_RENZO: return lg(16.0 / 3.0) + lg(p->Gstar) + lg(pa->a);
+  case DC_CT_LANGSTON: case DC_CT_ZHENG: case DC_CT_TSUJI: return lg(8.0) + lg(p->Gstar) + lg(pa->a);
+  default: return -INFINITY;
+  }
+}
+
+/* log of a bound on the dashpot (-inf: none) for a spring of log stiffness lK */
+static double ct_leta(const dc_classical_tangential *m, const dc_classical_tangential_contact *c, double lK)
+{
+  const dc_classical_tangential_params *p = &m->p;
+  return fmax(fmax(lg(p->gammat), lg(c->gamman)),
+              fmax(lg(2.0) + 0.5 * (lg(c->meff) + lK) + fmax(lg(p->eta_l), lg(m->zeta_t)), lg(p->t_visc) + lK));
+}
+
+/* log of a bound on a step's results and intermediates: mu F_b, the
+   spring stiffness, the dashpots times the velocity, the spring times its
+   stiffness, the spring a sliding step leaves ((F - eta v)/K), the
+   displacements and velocities */
+static double ct_bound(const dc_classical_tangential *m, const dc_patch *pa, const dc_classical_tangential_contact *c,
+                       const double *du, const double *vt, double dt, const dc_classical_tangential_state *h)
+{
+  const dc_classical_tangential_params *p = &m->p;
+  const double lK = ct_lK(m, pa, c);
+  double lv = -INFINITY, ld = -INFINITY, ls = -INFINITY;
+  for (int i = 0; i < 3; i++) {
+    lv = fmax(lv, lg(vt[i]));
+    ld = fmax(ld, du ? lg(du[i]) : lg(vt[i]) + lg(dt));
+    ls = fmax(ls, lg(h->spring[i]));
+    if (p->law == DC_CT_INCREMENTAL) ls = fmax(ls, lg(h->rev[i]));
+  }
+  const double leta = ct_leta(m, c, lK);
+  const double llim = lg(p->mu) + lg(pa->F_bound);
+  double b = fmax(llim, fmax(lK, leta + lv));
+  b = fmax(b, fmax(lK + fmax(ld, ls) + 1.0, fmax(fmax(ld, ls), lv)));
+  return fmax(b, fmax(llim, leta + lv) - lK + 1.0);
+}
+
+/* |x| over its part in the plane of the unit n (1 for x = 0): how much
+   the rounding of the projection is amplified */
+static double plane_cond(const double *x, const double *n)
+{
+  const double mx = max_abs3(x);
+  if (!(mx > 0.0) || !isfinite(mx)) return 1.0;
+  const double y[3] = {x[0] / mx, x[1] / mx, x[2] / mx}, yn = dot3(y, n);
+  const double p[3] = {y[0] - yn * n[0], y[1] - yn * n[1], y[2] - yn * n[2]};
+  return fmax(1.0, sqrt(dot3(y, y)) / sqrt(dot3(p, p)));
+}
+
+static void fuzz_classical_tangential(void)
+{
+  fz_fn *f = fz_new("dc_classical_tangential_check");
+  fz_fn *fi = fz_new("dc_classical_tangential_init");
+  fi->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_classical_tangential_params p = ct_params();
+    fz_field fl[CT_NF];
+    int bad;
+    const int inside = ct_fields(&p, fl, &bad);
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_classical_tangential_check(&p, &err);
+    FZ_CHECK(f, st, bad, inside, 1, 1, CT_FMT, CT_ARGS(p));
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) && (st == DC_OK ? UNTOUCHED(err) : err_names(&err, fl, CT_NF)),
+              "wrong status or error report", CT_FMT ": status %d", CT_ARGS(p), st);
+    fi->seconds -= fz_now();
+    dc_classical_tangential m;
+    SENTINEL(m);
+    SENTINEL(err);
+    const int si = dc_classical_tangential_init(&p, &m, &err);
+    FZ_CHECK(fi, si, bad, inside, UNTOUCHED(m), ALLFIN(m.zeta_t, m.ratio) && m.zeta_t >= 0.0 && m.ratio >= 0.0,
+             CT_FMT, CT_ARGS(p));
+    /* DC_EDOM as the check; DC_ERANGE only where 4 G* / E* leaves the doubles */
+    const double lr = lg(4.0) + lg(p.Gstar) - lg(p.Estar);
+    const int range = inside && (p.law == DC_CT_SPRING_SLIDING || p.law == DC_CT_SPRING_DASHPOT_SLIDING ||
+                                 p.law == DC_CT_INCREMENTAL) &&
+                      p.stiffness == DC_CT_KT_RATIO && (lr > LOG_MAX - 1.0 || lr < log(DBL_TRUE_MIN) + 1.0);
+    FZ_EXPECT(fi, (si == DC_EDOM) == (st == DC_EDOM) && (si != DC_ERANGE || range) &&
+                      (si == DC_OK ? UNTOUCHED(err) : err.name && err.range),
+              "not the check's status, DC_ERANGE for a representable ratio, or no error report",
+              CT_FMT ": status %d", CT_ARGS(p), si);
+    if (si == DC_OK) {
+      if (nct < 64) ctpool[nct++] = m;
+      else ctpool[UI(64)] = m;
+    }
+    fi->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the step: chains of calls on one history (a contact) with one model,
+     the normal turning slowly, stick and slip, now and then wild inputs,
+     any finite history (its domain), a patch that is not formed; the
+     laws other than INCREMENTAL get any reversal force (they neither read
+     nor write it: a wrapper may store only the spring) */
+  f = fz_new("dc_classical_tangential_step");
+  dc_classical_tangential_state h;
+  memset(&h, 0, sizeof h);
+  const dc_classical_tangential *m = &ctpool[0];
+  double n0[3] = {0.0, 0.0, 1.0}, a0 = 1e-4, F0 = 1.0, m0 = 1e-6, dt0 = 1e-6;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) {   /* a new contact */
+      memset(&h, 0, sizeof h);
+      m = &ctpool[UI(nct)];
+      a0 = U() < 0.8 ? fz_log(1e-8, 1e-2) : fz_pos();
+      F0 = U() < 0.8 ? fz_log(1e-9, 1e4) : fz_pos();
+      m0 = U() < 0.8 ? fz_log(1e-12, 1e3) : fz_pos();
+      dt0 = fz_log(1e-8, 1e-4);
+    }
+    const int inc = m->p.law == DC_CT_INCREMENTAL;
+    if (!inc && U() < 0.2)
+      for (int i = 0; i < 3; i++) h.rev[i] = fz_wild();
+    if (U() < 0.003) ((double *)&h)[UI(inc ? DC_CT_HISTORY_NFIELDS : DC_CT_SPRING_NFIELDS)] = U() < 0.5 ? fz_wild() : fz_wide();
+    double n[3];
+    if (U() < 0.05) unit_vector(n0);
+    else {
+      for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
+      const double l = sqrt(dot3(n0, n0));
+      for (int i = 0; i < 3; i++) n0[i] /= l;
+    }
+    for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
+    dc_patch pa;
+    pa.a = A(U() < 0.02 ? 0.0 : a0 * fz_log(0.5, 2.0));
+    pa.b = pa.a * U();
+    double ax[3];
+    unit_vector(ax);
+    memcpy(pa.axis, ax, sizeof ax);
+    pa.F_bound = A(U() < 0.02 ? 0.0 : F0 * fz_log(0.5, 2.0));
+    pa.F_elastic = pa.F_bound;
+    pa.formed = A(U() < 0.03 ? 0.0 : 1.0);
+    const dc_classical_tangential_contact c = {A(m0), A(U() < 0.8 ? fz_log(1e1, 1e10) : fz_pos()),
+                                               A(U() < 0.8 ? fz_log(1e-6, 1e2) : U() < 0.5 ? 0.0 : fz_pos())};
+    /* displacements from far below to far above the sliding distance */
+    const double us = a0 * fz_log(1e-12, 1e-1);
+    double du[3], vt[3];
+    for (int i = 0; i < 3; i++) {
+      du[i] = A(us * (2.0 * U() - 1.0));
+      vt[i] = A(us / dt0 * (2.0 * U() - 1.0));
+    }
+    const int pass_du = U() < 0.8;
+    const double dt = A(U() < 0.9 ? dt0 : PICK(0.0, -1e-7, 1e-300));
+    const int bad = !ALLFIN(pa.a, pa.F_bound, pa.formed, n[0], n[1], n[2], vt[0], vt[1], vt[2], c.meff, c.kn, c.gamman) ||
+                    !fin(h.spring, 3) || (inc && !fin(h.rev, 3)) || (pass_du ? !fin(du, 3) : !isfinite(dt));
+    const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    const int dom = !bad && pa.a >= 0.0 && pa.F_bound >= 0.0 && fabs(nn - 1.0) <= 1e-6 && (pass_du || dt > 0.0) &&
+                    c.meff > 0.0 && c.kn >= 0.0 && c.gamman >= 0.0;
+    const dc_classical_tangential_state h0 = h;
+    dc_classical_tangential_out o;
+    SENTINEL(o);
+    const int st = dc_classical_tangential_step(m, &pa, &c, n, pass_du ? du : NULL, vt, dt, &h, &o);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h),
+             FIN(o.Ft) && ALLFIN(o.kt, o.gammat) && (o.sliding == 0 || o.sliding == 1) && fin(h.spring, 3) &&
+                 (!inc || fin(h.rev, 3)),
+             CT_FMT " a %.17g F_b %.17g formed %.17g n (%.17g %.17g %.17g) meff %.17g kn %.17g gamman %.17g "
+             "du %s(%.17g %.17g %.17g) vt (%.17g %.17g %.17g) dt %.17g spring (%.17g %.17g %.17g)",
+             CT_ARGS(m->p), pa.a, pa.F_bound, pa.formed, n[0], n[1], n[2], c.meff, c.kn, c.gamman, pass_du ? "" : "NULL ",
+             du[0], du[1], du[2], vt[0], vt[1], vt[2], dt, h0.spring[0], h0.spring[1], h0.spring[2]);
+    if (!inc)
+      FZ_EXPECT(f, !memcmp(h.rev, h0.rev, sizeof h.rev), "reversal force read or written by a law without one",
+                CT_FMT " status %d rev (%.17g %.17g %.17g)", CT_ARGS(m->p), st, h0.rev[0], h0.rev[1], h0.rev[2]);
+    if (st == DC_OK && dom) {
+      int pr;
+      if (pa.formed == 0.0) {
+        pr = o.Ft[0] == 0.0 && o.Ft[1] == 0.0 && o.Ft[2] == 0.0 && o.kt == 0.0 && o.gammat == 0.0 && o.sliding == 0 &&
+             h.spring[0] == 0.0 && h.spring[1] == 0.0 && h.spring[2] == 0.0 &&
+             (!inc || (h.rev[0] == 0.0 && h.rev[1] == 0.0 && h.rev[2] == 0.0));
+      } else {
+        /* |Ft| <= mu F_b (but VISCOUS), kt 0 when sliding, Ft in the plane
+           to rounding (a subnormal spring or velocity: to its last place
+           times the spring and dashpot) */
+        const double lim = m->p.mu * pa.F_bound, F = hypot(hypot(o.Ft[0], o.Ft[1]), o.Ft[2]);
+        pr = o.kt >= 0.0 && o.gammat >= 0.0 && (!o.sliding || o.kt == 0.0) &&
+             (m->p.law == DC_CT_VISCOUS || F <= lim * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN);
+        const double lK = ct_lK(m, &pa, &c), amp = 1.0 + exp(fmax(lK, 0.0)) + exp(fmax(ct_leta(m, &c, lK), 0.0));
+        const double cond = fmax(fmax(plane_cond(pass_du ? du : vt, n), plane_cond(vt, n)), plane_cond(h0.spring, n));
+        if (fabs(nn - 1.0) < 1e-14)
+          pr &= fabs(o.Ft[0] * n[0] + o.Ft[1] * n[1] + o.Ft[2] * n[2]) <=
+                (F > 0.0 ? 1e-12 * F * cond : 0.0) + 16.0 * DBL_TRUE_MIN * amp;
+      }
+      FZ_EXPECT(f, pr, "not the law's promises (limit, plane, zeros when not formed)",
+                CT_FMT " a %.17g F_b %.17g formed %.17g n (%.17g %.17g %.17g) du %s(%.17g %.17g %.17g) "
+                "vt (%.17g %.17g %.17g) dt %.17g: Ft (%.17g %.17g %.17g) kt %.17g gammat %.17g sliding %d",
+                CT_ARGS(m->p), pa.a, pa.F_bound, pa.formed, n[0], n[1], n[2], pass_du ? "" : "NULL ", du[0], du[1], du[2],
+                vt[0], vt[1], vt[2], dt, o.Ft[0], o.Ft[1], o.Ft[2], o.kt, o.gammat, o.sliding);
+    }
+    FZ_EXPECT(f, st != DC_ERANGE || ct_bound(m, &pa, &c, pass_du ? du : NULL, vt, dt, &h0) > LOG_MAX - 3.0,
+              "DC_ERANGE for representable results",
+              CT_FMT " a %.17g F_b %.17g meff %.17g kn %.17g gamman %.17g du %s(%.17g %.17g %.17g) vt (%.17g %.17g %.17g) "
+              "dt %.17g spring (%.17g %.17g %.17g)",
+              CT_ARGS(m->p), pa.a, pa.F_bound, c.meff, c.kn, c.gamman, pass_du ? "" : "NULL ", du[0], du[1], du[2], vt[0],
+              vt[1], vt[2], dt, h0.spring[0], h0.spring[1], h0.spring[2]);
+    if (st != DC_OK && U() < 0.5) memset(&h, 0, sizeof h);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_rough_plastic.h                                                 */
+
+/* The rough sums take ~1.6 us where the regimes meet (11 panels of
+   Gauss-Legendre; test_gw_rough_plastic times them): 3e4 calls of each
+   function that sums them. */
+#define N_GWP 30000L
+
+static int gwp_params_in(const dc_gw_plastic_params *p)
+{
+  return ALLFIN(p->hardness, p->K_v, p->c_h, p->c_A) && p->hardness > 0.0 && p->K_v > 0.0 &&
+         p->c_h >= 2.0 / 3.0 * p->K_v && p->c_A >= 2.0 &&
+         (p->plastic_area == DC_GW_PLASTIC_AREA_JW || p->plastic_area == DC_GW_PLASTIC_AREA_TRUNCATED);
+}
+/* the four numbers of jamari_ep's parameters (same names and ranges), the area setting */
+static dc_gw_plastic_params gwp_params(void)
+{
+  const dc_jamari_params j = jamari_params();
+  return (dc_gw_plastic_params){j.H, j.K_v, j.c_h, j.c_A, AI(UI(2))};
+}
+
+#define GWP_FMT "H %.17g K_v %.17g c_h %.17g c_A %.17g area %d"
+#define GWP_ARGS(p) (p).hardness, (p).K_v, (p).c_h, (p).c_A, (p).plastic_area
+
+static dc_gw_plastic_summit spool[POOL];
+static int nsp;
+
+/* log of a bound on the summit law's f, area, df at omega > 0 (elastic
+   and plastic forms both; df's factor from the elastic-plastic branch) */
+static double gwp_summit_bound(const dc_gw_plastic_summit *s, double w)
+{
+  const double lw = lg(w), lRf = lg(s->R_force), lRa = lg(M_PI) + lg(s->R_area), r = s->ratio;
+  double b = fmax(lg(4.0 / 3.0) + lg(s->Estar) + 0.5 * (lRf + lw) + lw, lg(2.0) + lg(s->Estar) + 0.5 * (lRf + lw));
+  b = fmax(b, lRa + lw + lg(s->lambda));
+  const double fac = s->lambda * s->c_h * (r > 1.0 ? 1.0 + 1.5 * r / (r - 1.0) + 1.0 / log(r) : 1.0);
+  return fmax(b, lRa + lg(s->H) + lg(fac) + fmax(lw, 0.0));
+}
+
+/* the same for n summits spread by sigma at overlap delta (x = sigma +
+   |delta| bounds the mean compression), and the point mass of kn where
+   w2 = w1 */
+static double gwp_rough_bound(const dc_hertz_geom *g, const dc_gw_plastic_summit *s, double n, double sg, double d)
+{
+  const double x = sg + fabs(d), lx = lg(x);
+  double b = fmax(hertz_bound(g, s->Estar, x), gwp_summit_bound(s, x));
+  b = fmax(b, lg(s->Estar) + 0.5 * lg(g->Rc) + 0.5 * lx + fmax(lx, 0.0) + lg(g->gamma) + lg(4.0));
+  if (s->ratio == 1.0) b = fmax(b, lg(M_PI) + lg(s->R_area) + lg(s->H) + lg(s->lambda * s->c_h) + lg(s->w1) - lg(sg));
+  return lg(n) + b + 2.0;
+}
+
+static void fuzz_gw_rough_plastic(void)
+{
+  fz_fn *f = fz_new("dc_gw_plastic_default_params");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double H = U() < 0.5 ? fz_log(1e7, 1e10) : fz_wild(), nu = U() < 0.7 ? -1.0 + 1.5 * U() : fz_wild();
+    dc_gw_plastic_params p = dc_gw_plastic_default_params(H, nu);
+    f->calls++;
+    const double Kv = 0.454 + 0.41 * nu;
+    FZ_EXPECT(f, !memcmp(&p.hardness, &H, sizeof H) && !memcmp(&p.K_v, &Kv, sizeof Kv) && p.c_h == 1.0 &&
+                 p.c_A == 108.0 && p.plastic_area == DC_GW_PLASTIC_AREA_JW,
+              "not the documented defaults", "H %.17g nu %.17g", H, nu);
+    dc_param_error err;
+    if (isfinite(H) && H > 0.0 && nu >= -1.0 && nu <= 0.5)
+      FZ_EXPECT(f, dc_gw_plastic_check(&p, &err) == DC_OK, "defaults fail the check", "H %.17g nu %.17g", H, nu);
+  }
+  fz_done(f);
+
+  static const char *names[5] = {"hardness", "plasticityKv", "plasticityCh", "plasticityCa", "plasticArea"};
+  f = fz_new("dc_gw_plastic_check");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_gw_plastic_params p = gwp_params();
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_gw_plastic_check(&p, &err);
+    const int inside = gwp_params_in(&p);
+    FZ_CHECK(f, st, !ALLFIN(p.hardness, p.K_v, p.c_h, p.c_A), inside, 1, 1, GWP_FMT, GWP_ARGS(p));
+    /* the first bad one in the documented order, with its value */
+    const double v[5] = {p.hardness, p.K_v, p.c_h, p.c_A, p.plastic_area};
+    int first = -1;
+    if (!(isfinite(p.hardness) && p.hardness > 0.0)) first = 0;
+    else if (!(isfinite(p.K_v) && p.K_v > 0.0)) first = 1;
+    else if (!(isfinite(p.c_h) && p.c_h >= 2.0 / 3.0 * p.K_v)) first = 2;
+    else if (!(isfinite(p.c_A) && p.c_A >= 2.0)) first = 3;
+    else if (!inside) first = 4;
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) &&
+                 (st == DC_OK ? UNTOUCHED(err)
+                              : first >= 0 && err.name && !strcmp(err.name, names[first]) && err.range &&
+                                    memcmp(&err.value, &v[first], sizeof(double)) == 0),
+              "wrong status or error report", GWP_FMT ": status %d", GWP_ARGS(p), st);
+  }
+  fz_done(f);
+
+  /* a summit bound to a geometry (w1, w2 may be 0 or +inf on DC_OK: the
+     header's limits of all-plastic and all-elastic summits), and its law */
+  f = fz_new("dc_gw_plastic_summit_init");
+  fz_fn *fl = fz_new("dc_gw_plastic_summit_law");
+  fl->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const dc_gw_plastic_params p = gwp_params();
+    const double E = A(U() < 0.7 ? fz_log(1e9, 1e12) : fz_pos());
+    dc_gw_plastic_summit s;
+    SENTINEL(s);
+    int st = dc_gw_plastic_summit_init(g, E, &p, &s);
+    const int ok = !isnan(s.w1) && s.w1 >= 0.0 && s.w2 >= s.w1 && s.lambda >= 1.0 && s.ratio >= 1.0 &&
+                   ALLFIN(s.ratio, s.lambda, s.Km, s.c_h, s.inv_log_ratio, s.H, s.Estar, s.R_force, s.R_area);
+    FZ_CHECK(f, st, !ALLFIN(p.hardness, p.K_v, p.c_h, p.c_A, E), gwp_params_in(&p) && isfinite(E) && E > 0.0,
+             UNTOUCHED(s), ok, "R %.17g %.17g E* %.17g " GWP_FMT, g->R_major, g->R_minor, E, GWP_ARGS(p));
+    FZ_EXPECT(f, st != DC_ERANGE, "DC_ERANGE (not among its statuses)", "R %.17g %.17g E* %.17g " GWP_FMT, g->R_major,
+              g->R_minor, E, GWP_ARGS(p));
+    if (st == DC_OK && ok) {
+      if (nsp < POOL) spool[nsp++] = s;
+      else spool[UI(POOL)] = s;
+    }
+    fl->seconds -= fz_now();
+    const dc_gw_plastic_summit *sp = st == DC_OK ? &s : &spool[UI(nsp)];
+    const double w = sp->w1 > 0.0 && sp->w1 < 1e300 ? sp->w1 : sp->R_force * 1e-6;
+    const double om = A(U() < 0.7 ? w * fz_log(1e-3, 1e4) : U() < 0.3 ? PICK(0.0, -0.0, sp->w1, sp->w2) : fz_wide());
+    double out[3];
+    SENTINEL(out);
+    st = dc_gw_plastic_summit_law(sp, om, &out[0], &out[1], &out[2]);
+    FZ_CHECK(fl, st, !isfinite(om), isfinite(om), UNTOUCHED(out),
+             FIN(out) && out[0] >= 0.0 && out[1] >= 0.0 && out[2] >= 0.0 &&
+                 (om > 0.0 || (out[0] == 0.0 && out[1] == 0.0 && out[2] == 0.0)),
+             "w1 %.17g w2 %.17g lambda %.17g omega %.17g", sp->w1, sp->w2, sp->lambda, om);
+    FZ_EXPECT(fl, st != DC_ERANGE || gwp_summit_bound(sp, om) > LOG_MAX - 2.0, "DC_ERANGE for representable results",
+              "w1 %.17g w2 %.17g lambda %.17g E* %.17g H %.17g omega %.17g", sp->w1, sp->w2, sp->lambda, sp->Estar, sp->H, om);
+    fl->seconds += fz_now();
+  }
+  fz_done(f);
+
+  f = fz_new("dc_gw_plastic_integrals");
+  for (long k = 0; k < N_GWP; k++) {
+    fz_call();
+    dc_gw_plastic_shape sh;
+    sh.a = A(U() < 0.7 ? fz_log(1e-4, 100.0) : U() < 0.5 ? fz_log(1e-300, 1e300) : PICK(DBL_TRUE_MIN, DBL_MIN, 1.0));
+    const double r = U() < 0.6 ? fz_log(1.0, 1e3) : U() < 0.5 ? PICK(1.0, 1e6) : fz_log(1.0, 1e6);
+    sh.b = A(sh.a * r);
+    sh.lambda = A(U() < 0.5 ? 2.0 : U() < 0.8 ? 1.0 + 15.6 * U() : PICK(1.0));
+    sh.Km = A(2.0 / 3.0 * (0.454 + 0.205 * U()) * (U() < 0.8 ? 1.0 : fz_log(1e-3, 1e3)));
+    sh.c_h = A(U() < 0.6 ? fmax(1.0, sh.Km) : sh.Km * (U() < 0.3 ? 1.0 : fz_log(1.0, 100.0)));
+    const double h = A(gw_h());
+    const int bad = !ALLFIN(sh.a, sh.b, sh.lambda, sh.Km, sh.c_h, h);
+    const int dom = !bad && sh.a > 0.0 && sh.b > sh.a && sh.b / sh.a <= 1e6 && sh.lambda >= 1.0 && sh.Km > 0.0 &&
+                    sh.c_h >= sh.Km && h >= DC_GW_H_MIN;
+    dc_gw_plastic_sums J;
+    SENTINEL(J);
+    const int st = dc_gw_plastic_integrals(&sh, h, &J);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(J),
+             ALLFIN(J.Je, J.Je12, J.Jp, J.Jdp, J.JA) && J.Je >= 0.0 && J.Je12 >= 0.0 && J.Jp >= 0.0 && J.Jdp >= 0.0 &&
+                 J.JA >= 0.0 && J.n_panels >= 0,
+             "a %.17g b %.17g lambda %.17g Km %.17g c_h %.17g h %.17g", sh.a, sh.b, sh.lambda, sh.Km, sh.c_h, h);
+    /* the sums <= lambda c_h (1 + 1.5 rho/(rho - 1) + 1/ln rho) max(b + |h|, 1)^3/2 (rho = b/a) */
+    const double rho = sh.b / sh.a, fac = 1.0 + 1.5 * rho / (rho - 1.0) + 1.0 / log(rho);
+    FZ_EXPECT(f, st != DC_ERANGE || !dom || lg(sh.lambda) + lg(sh.c_h) + lg(fac) + 1.5 * fmax(lg(sh.b + fabs(h)), 0.0) > LOG_MAX - 3.0,
+              "DC_ERANGE for representable sums", "a %.17g b %.17g lambda %.17g Km %.17g c_h %.17g h %.17g", sh.a, sh.b,
+              sh.lambda, sh.Km, sh.c_h, h);
+  }
+  fz_done(f);
+
+  /* the rough contact: sigma around the yield compression w1, so that the
+     regimes meet on the summits' Gaussian */
+  f = fz_new("dc_gw_rough_plastic");
+  for (long k = 0; k < N_GWP; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.6 ? fz_log(1e9, 1e12) : fz_pos());
+    const dc_gw_plastic_params p = gwp_params();
+    const double n = A(U() < 0.6 ? fz_log(1e-2, 1e6) : fz_pos());
+    dc_gw_plastic_summit sm;
+    const int si = dc_gw_plastic_summit_init(g, E, &p, &sm);
+    const double w1 = si == DC_OK && sm.w1 > 0.0 && sm.w1 < 1e300 ? sm.w1 : g->R_minor * 1e-6;
+    const double sg = A(U() < 0.5 ? w1 * fz_log(1e-3, 1e3) : U() < 0.4 ? g->R_minor * fz_log(1e-9, 1e-3)
+                        : U() < 0.3 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.5 ? sg * (-12.0 + 60.0 * U()) : U() < 0.4 ? w1 * fz_log(1e-2, 1e3)
+                       : U() < 0.2 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(E, n, sg, d, p.hardness, p.K_v, p.c_h, p.c_A);
+    dc_gw_rough_state s;
+    SENTINEL(s);
+    const int st = dc_gw_rough_plastic(g, E, &p, n, sg, d, &s);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && n > 0.0 && sg >= 0.0 && gwp_params_in(&p), UNTOUCHED(s),
+             FIN(s) && s.F >= 0.0 && s.kn >= 0.0 && s.area >= 0.0,
+             "R %.17g %.17g E* %.17g " GWP_FMT " n_asp %.17g sigma %.17g delta %.17g", g->R_major, g->R_minor, E,
+             GWP_ARGS(p), n, sg, d);
+    FZ_EXPECT(f, st != DC_ERANGE || (si == DC_OK && gwp_rough_bound(g, &sm, n, sg, d) > LOG_MAX - 3.0),
+              "DC_ERANGE for a representable state", "R %.17g %.17g E* %.17g " GWP_FMT " n_asp %.17g sigma %.17g delta %.17g",
+              g->R_major, g->R_minor, E, GWP_ARGS(p), n, sg, d);
+  }
+  fz_done(f);
+
+  /* the rough flat: its domain ends at h = -delta/sigma >= DC_GW_H_MIN */
+  f = fz_new("dc_gw_plastic_flat");
+  for (long k = 0; k < N_GWP; k++) {
+    fz_call();
+    const dc_gw_plastic_params p = gwp_params();
+    const double E = A(U() < 0.6 ? fz_log(1e9, 1e12) : fz_pos()), Rs = A(U() < 0.6 ? fz_log(1e-8, 1e-3) : fz_pos());
+    const double eta = A(U() < 0.6 ? fz_log(1e8, 1e14) : fz_pos());
+    const double sg = A(U() < 0.6 ? fabs(Rs) * fz_log(1e-7, 1e-2) : U() < 0.2 ? PICK(DBL_TRUE_MIN, DBL_MIN) : fz_pos());
+    const double d = A(U() < 0.6 ? sg * (-12.0 + 60.0 * U()) : U() < 0.2 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(E, Rs, eta, sg, d, p.hardness, p.K_v, p.c_h, p.c_A);
+    const double h = -d / sg;
+    const int dom = !bad && E > 0.0 && Rs > 0.0 && eta > 0.0 && sg > 0.0 && gwp_params_in(&p) && h >= DC_GW_H_MIN;
+    dc_gw_plastic_flat_state s;
+    SENTINEL(s);
+    const int st = dc_gw_plastic_flat(&p, E, Rs, eta, sg, d, &s);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(s), FIN(s) && s.p >= 0.0 && s.area_ratio >= 0.0 && s.dp >= 0.0 && s.h == h,
+             GWP_FMT " E* %.17g R_s %.17g eta %.17g sigma %.17g delta %.17g", GWP_ARGS(p), E, Rs, eta, sg, d);
+    if (st == DC_ERANGE) {
+      dc_hertz_geom gs;
+      dc_gw_plastic_summit sm;
+      const int known = dc_hertz_geometry(Rs, Rs, &gs) == DC_OK && dc_gw_plastic_summit_init(&gs, E, &p, &sm) == DC_OK;
+      FZ_EXPECT(f, !known || gwp_rough_bound(&gs, &sm, eta, sg, d) > LOG_MAX - 3.0 || lg(h) > LOG_MAX - 1.0,
+                "DC_ERANGE for a representable state", GWP_FMT " E* %.17g R_s %.17g eta %.17g sigma %.17g delta %.17g",
+                GWP_ARGS(p), E, Rs, eta, sg, d);
+    }
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_rough_table.h                                                   */
+
+/* dc_gw_table_init builds a spline through 209 nodes (~20 us): 5000 calls. */
+#define N_TABLE_INIT 5000L
+
+static dc_gw_table_law tlpool[8];
+static int ntl;
+static dc_gw_table_law tl_out;     /* 6.7 kB each: static */
+static dc_gw_table_pair tp_out;
+
+static void fuzz_gw_table(void)
+{
+  fuzz_law_check("dc_gw_table_check", dc_gw_table_check, DC_GW_TABLE_MU_MIN, 0, DC_GW_TABLE_MU_MAX, 1.0, 50.0);
+  fz_fn *f = fz_new("dc_gw_table_node");
+  for (long k = 0; k < N_CALLS; k++) {
+    const int i = UI(DC_GW_TABLE_NNODE);
+    const double x = dc_gw_table_node(i), y = i + 1 < DC_GW_TABLE_NNODE ? dc_gw_table_node(i + 1) : INFINITY;
+    f->calls++;
+    FZ_EXPECT(f, isfinite(x) && x < y && (i != 0 || x == DC_GW_TABLE_X_LO) &&
+                 (i != DC_GW_TABLE_NNODE - 1 || x == DC_GW_TABLE_X_HI),
+              "not increasing from X_LO to X_HI", "node %d: %.17g, next %.17g", i, x, y);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_gw_table_init");
+  for (long k = 0; k < N_TABLE_INIT; k++) {
+    fz_call();
+    const double mu = A(U() < 0.6 ? 1.0 + 49.0 * U() : U() < 0.5 ? fz_log(1.0, 50.0) : PICK(1.0, 50.0, 2.0, 4.0, 25.0));
+    SENTINEL(tl_out);
+    const int st = dc_gw_table_init(mu, &tl_out);
+    FZ_CHECK(f, st, !isfinite(mu), mu >= DC_GW_TABLE_MU_MIN && mu <= DC_GW_TABLE_MU_MAX, UNTOUCHED(tl_out),
+             FIN(tl_out) && tl_out.mu == mu, "mu %.17g", mu);
+    if (st == DC_OK) {
+      if (ntl < 8) tlpool[ntl++] = tl_out;
+      else if (U() < 0.05) tlpool[UI(8)] = tl_out;
+    }
+  }
+  fz_done(f);
+
+  /* P* >= 0, nondecreasing; DC_ERANGE only where alpha'^3/2 overflows */
+  f = fz_new("dc_gw_table_pstar");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_gw_table_law *L = &tlpool[UI(ntl)];
+    const double ap = A(U() < 0.5 ? -8.0 + 20.0 * U() : U() < 0.4 ? fz_sign(fz_log(1e-3, 1e5))
+                        : U() < 0.5 ? PICK(-6.0, -6.0 + 1.0 / 16, 0.0, -0.0, 1.0, 4096.0) : fz_wide());
+    double P[2];
+    SENTINEL(P);
+    const int st = dc_gw_table_pstar(L, ap, &P[0], &P[1]);
+    FZ_CHECK(f, st, !isfinite(ap), isfinite(ap), UNTOUCHED(P), FIN(P) && P[0] >= 0.0 && P[1] >= 0.0,
+             "mu %.17g alpha' %.17g: %.17g %.17g", L->mu, ap, P[0], P[1]);
+    FZ_EXPECT(f, st != DC_ERANGE || 1.5 * lg(ap) > LOG_MAX - 1.0, "DC_ERANGE for a representable P*",
+              "mu %.17g alpha' %.17g", L->mu, ap);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_gw_table_force");
+  fz_fn *fp = fz_new("dc_gw_table_pair_init");
+  fz_fn *ff = fz_new("dc_gw_table_pair_force");
+  fp->seconds = ff->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_gw_table_law *L = &tlpool[UI(ntl)];
+    const double E = A(U() < 0.3 ? fz_log(1e5, 1e12) : fz_pos());
+    const double R = A(U() < 0.3 ? fz_log(1e-6, 1.0) : fz_pos());
+    const double sg = A(U() < 0.3 ? fabs(R) * fz_log(1e-9, 1e-2) : U() < 0.3 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN, 1e-310) : fz_pos());
+    const double d = A(U() < 0.6 ? sg * (-8.0 + 16.0 * U()) : U() < 0.2 ? sg * fz_log(1.0, 1e5)
+                       : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(E, R, sg, d);
+    double out[2];
+    SENTINEL(out);
+    const int st = dc_gw_table_force(L, E, R, sg, d, &out[0], &out[1]);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && R > 0.0 && sg >= 0.0, UNTOUCHED(out),
+             FIN(out) && out[0] >= 0.0 && out[1] >= 0.0, "mu %.17g E* %.17g R %.17g sigma %.17g delta %.17g", L->mu, E, R,
+             sg, d);
+    /* P <= 4/3 E* R^1/2 max(|delta|, 6 sigma)^3/2 max P* (P* < 30 there), kn likewise */
+    const double x = fmax(fabs(d), 6.0 * sg);
+    const double b = lg(E) + 0.5 * lg(R) + 0.5 * lg(x) + fmax(lg(x), 0.0) + lg(40.0);
+    FZ_EXPECT(f, st != DC_ERANGE || b > LOG_MAX - 2.0, "DC_ERANGE for a representable force",
+              "mu %.17g E* %.17g R %.17g sigma %.17g delta %.17g", L->mu, E, R, sg, d);
+    /* the bound pair: sigma > 0; DC_ERANGE only where its constants do not fit */
+    fp->seconds -= fz_now();
+    SENTINEL(tp_out);
+    const int sp = dc_gw_table_pair_init(L, E, sg, &tp_out);
+    fp->seconds += fz_now();
+    FZ_CHECK(fp, sp, !isfinite(E) || !isfinite(sg), isfinite(E) && isfinite(sg) && E > 0.0 && sg > 0.0,
+             UNTOUCHED(tp_out), FIN(tp_out) && !memcmp(&tp_out.law, L, sizeof *L), "mu %.17g E* %.17g sigma %.17g",
+             L->mu, E, sg);
+    const double lc = lg(4.0 / 3.0) + lg(E), lcs = lc + 1.5 * lg(sg);
+    FZ_EXPECT(fp, sp != DC_ERANGE || lc > LOG_MAX - 1.0 || -lg(sg) > LOG_MAX - 1.0 || lcs > LOG_MAX - 1.0 ||
+                      lcs < log(DBL_MIN) + 1.0,
+              "DC_ERANGE for representable constants", "E* %.17g sigma %.17g", E, sg);
+    if (sp != DC_OK || !(R > 0.0 && isfinite(R))) continue;
+    /* the unchecked kernel: the checked force's value wherever it is
+       finite (the force evaluates the same kernel first); NaN delta: 0 */
+    for (int j = 0; j < 3; j++) {
+      const double dj = j == 0 ? d : U() < 0.7 ? sg * (-8.0 + 16.0 * U()) : U() < 0.2 ? NAN : fz_wide();
+      double o[2] = {out[0], out[1]};
+      int sj = st;
+      if (j > 0) sj = dc_gw_table_force(L, E, R, sg, dj, &o[0], &o[1]);
+      ff->seconds -= fz_now();
+      double q[2];
+      dc_gw_table_pair_force(&tp_out, sqrt(R), dj, &q[0], &q[1]);
+      ff->seconds += fz_now();
+      ff->calls++;
+      if (isnan(dj))
+        FZ_EXPECT(ff, q[0] == 0.0 && q[1] == 0.0, "not 0 for NaN delta", "mu %.17g E* %.17g R %.17g sigma %.17g", L->mu, E,
+                  R, sg);
+      else if (isfinite(dj) && FIN(q))
+        FZ_EXPECT(ff, sj == DC_OK && q[0] == o[0] && q[1] == o[1], "differs from dc_gw_table_force",
+                  "mu %.17g E* %.17g R %.17g sigma %.17g delta %.17g: %.17g %.17g vs %.17g %.17g", L->mu, E, R, sg, dj,
+                  q[0], q[1], o[0], o[1]);
+    }
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* gw_rough_adhesive_table.h                                          */
+
+static dc_gwa_table_pair gapool[64];
+static int nga;
+
+/* log of a bound on the force and stiffness: |G| < 1, |dG/dx| < e^12
+   (tau <= e^8 after the clamp) */
+static double gwa_bound(const dc_gwa_table_pair *p, double R)
+{
+  return lg(p->F_coef) + lg(R) + fmax(0.0, lg(p->inv_sigma) + 12.0);
+}
+
+#define GWA_FMT "E* %.17g w %.17g sigma %.17g n_asp %.17g R %.17g"
+#define GWA_ARGS(p, R) (p)->Estar, (p)->w, (p)->sigma, (p)->n_asp, (R)
+
+static void fuzz_gwa_table(void)
+{
+  fz_fn *f = fz_new("dc_gwa_table_x_node");
+  for (long k = 0; k < N_CALLS; k++) {
+    const int i = UI(DC_GWA_TABLE_NX);
+    const double x = dc_gwa_table_x_node(i), y = i + 1 < DC_GWA_TABLE_NX ? dc_gwa_table_x_node(i + 1) : INFINITY;
+    f->calls++;
+    FZ_EXPECT(f, isfinite(x) && x < y && (i != 0 || x == -256.0) && (i != DC_GWA_TABLE_NDEEP || x == DC_GWA_TABLE_X_LO) &&
+                 (i != DC_GWA_TABLE_NX - 1 || x == DC_GWA_TABLE_X_HI),
+              "not increasing from -256 over X_LO to X_HI", "node %d: %.17g, next %.17g", i, x, y);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_gwa_table_check");
+  fz_fn *fp = fz_new("dc_gwa_table_pair_init");
+  fp->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double E = A(U() < 0.6 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(U() < 0.1 ? 0.0 : U() < 0.6 ? fz_log(1e-3, 1.0) : fz_pos());
+    const double sg = A(U() < 0.6 ? fz_log(1e-10, 1e-5) : U() < 0.2 ? PICK(DBL_TRUE_MIN, DBL_MIN, 0.0) : fz_pos());
+    const double n = A(U() < 0.6 ? fz_log(1e-2, 1e6) : fz_pos());
+    const fz_spec t[4] = {{"youngsModulus (E*)", E, 1, pos_fin(E)},
+                          {"workOfAdhesion", w, 1, nonneg_fin(w)},
+                          {"roughness", sg, 1, pos_fin(sg)},
+                          {"asperityCount", n, 1, pos_fin(n)}};
+    fz_field fl[4];
+    int bad;
+    const int inside = fz_fields(t, 4, 0, fl, &bad);
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_gwa_table_check(E, w, sg, n, &err);
+    FZ_CHECK(f, st, bad, inside, 1, 1, "E* %.17g w %.17g sigma %.17g n_asp %.17g", E, w, sg, n);
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) && (st == DC_OK ? UNTOUCHED(err) : err_names(&err, fl, 4)),
+              "wrong status or error report", "E* %.17g w %.17g sigma %.17g n_asp %.17g: status %d", E, w, sg, n, st);
+    fp->seconds -= fz_now();
+    dc_gwa_table_pair p;
+    SENTINEL(p);
+    const int sp = dc_gwa_table_pair_init(E, w, sg, n, &p);
+    FZ_CHECK(fp, sp, bad, inside, UNTOUCHED(p),
+             FIN(p) && p.Estar == E && p.w == w && p.sigma == sg && p.n_asp == n && (w == 0.0 || (p.ub < 0.0 && p.dc_coef > 0.0)),
+             "E* %.17g w %.17g sigma %.17g n_asp %.17g", E, w, sg, n);
+    /* DC_ERANGE only where 8 w n_asp, 1/sigma or delta_c = (8 w/(pi E*))^2/3 / 2 leave the doubles */
+    const double ldc = log(0.5) + 2.0 / 3.0 * (lg(8.0 / M_PI) + lg(w) - lg(E));
+    FZ_EXPECT(fp, sp != DC_ERANGE || lg(8.0) + lg(w) + lg(n) > LOG_MAX - 1.0 || -lg(sg) > LOG_MAX - 1.0 ||
+                      (w > 0.0 && (ldc > LOG_MAX - 1.0 || ldc < log(DBL_MIN) + 1.0)),
+              "DC_ERANGE for representable constants", "E* %.17g w %.17g sigma %.17g n_asp %.17g", E, w, sg, n);
+    if (sp == DC_OK) {
+      if (nga < 64) gapool[nga++] = p;
+      else gapool[UI(64)] = p;
+    }
+    fp->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* G <= 0 and bounded (-pi/8 deep in compression, -> 0 apart): no overflow */
+  f = fz_new("dc_gwa_table_reduced");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int br = AI(UI(2));
+    const double x = A(U() < 0.4 ? -300.0 + 320.0 * U() : U() < 0.4 ? fz_sign(fz_log(1e-3, 1e6))
+                       : U() < 0.5 ? PICK(-256.0, -8.0, -8.0 + 1.0 / 16, 8.0, 0.0, -0.0) : fz_wide());
+    const double eta = A(U() < 0.7 ? -6.0 + 16.0 * U() : U() < 0.5 ? PICK(-4.5, 8.0, 0.0) : fz_wide());
+    double out[2];
+    SENTINEL(out);
+    const int st = dc_gwa_table_reduced(br, x, eta, &out[0], &out[1]);
+    FZ_CHECK(f, st, !ALLFIN(x, eta), ALLFIN(x, eta) && (br == DC_GW_LOADING || br == DC_GW_UNLOADING), UNTOUCHED(out),
+             FIN(out) && out[0] <= 0.0, "branch %d x %.17g eta %.17g", br, x, eta);
+    FZ_EXPECT(f, st != DC_ERANGE, "DC_ERANGE for a bounded G", "branch %d x %.17g eta %.17g", br, x, eta);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_gwa_table_force");
+  fz_fn *fr = fz_new("dc_gwa_table_reach");
+  fr->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_gwa_table_pair *p = &gapool[UI(nga)];
+    const double R = A(U() < 0.6 ? fz_log(1e-6, 1e-1) : fz_pos());
+    const double db = -p->ub * p->dc_coef * cbrt(fabs(R));   /* |delta_break| */
+    const double d = A(U() < 0.4 ? p->sigma * (-20.0 + 30.0 * U()) : U() < 0.5 ? db * (-3.0 + 6.0 * U())
+                       : U() < 0.2 ? PICK(0.0, -0.0) : fz_wide());
+    const int br = AI(UI(2));
+    const int bad = !ALLFIN(R, d);
+    double out[2];
+    SENTINEL(out);
+    const int st = dc_gwa_table_force(p, R, br, d, &out[0], &out[1]);
+    FZ_CHECK(f, st, bad, !bad && R > 0.0 && (br == DC_GW_LOADING || br == DC_GW_UNLOADING), UNTOUCHED(out),
+             FIN(out) && out[0] <= 0.0 && (p->w != 0.0 || (out[0] == 0.0 && out[1] == 0.0)),
+             GWA_FMT " branch %d delta %.17g", GWA_ARGS(p, R), br, d);
+    FZ_EXPECT(f, st != DC_ERANGE || gwa_bound(p, R) > LOG_MAX - 3.0, "DC_ERANGE for representable results",
+              GWA_FMT " branch %d delta %.17g", GWA_ARGS(p, R), br, d);
+    /* the reach (D + 8) sigma >= 8 sigma, finite where representable */
+    fr->seconds -= fz_now();
+    const double Rr = fabs(R), r = dc_gwa_table_reach(p, Rr);
+    fr->calls++;
+    if (Rr > 0.0 && isfinite(Rr))
+      FZ_EXPECT(fr, r >= 8.0 * p->sigma && (isfinite(r) || fmax(lg(-p->ub * p->dc_coef) + lg(Rr) / 3.0, lg(8.0 * p->sigma)) > LOG_MAX - 1.0),
+                "not (D + 8) sigma", GWA_FMT ": %.17g", GWA_ARGS(p, Rr), r);
+    fr->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the step: chains of calls on one history (a contact), overlaps
+     wandering through loading, the blend and unloading, now and then wild
+     inputs or a corrupted history (its content: touched 0 or 1, the
+     largest overlap finite) */
+  f = fz_new("dc_gwa_table_step");
+  double hist[2] = {0.0, 0.0}, R0 = 1e-3, x = 0.0, sc = 1e-8;
+  const dc_gwa_table_pair *p = &gapool[0];
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) {   /* a new contact */
+      hist[0] = hist[1] = 0.0;
+      p = &gapool[UI(nga)];
+      R0 = U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos();
+      sc = fmax(p->sigma, -p->ub * p->dc_coef * cbrt(R0));
+      x = -10.0 * sc;
+    }
+    if (U() < 0.003) hist[UI(2)] = U() < 0.5 ? fz_wild() : fz_wide();
+    x += sc * fz_sign(fz_log(1e-3, 3.0));
+    if (U() < 0.01) x = -10.0 * sc;
+    const double R = A(R0), d = A(x), h0[2] = {hist[0], hist[1]};
+    const int bad = !ALLFIN(R, d, hist[0], hist[1]);
+    const int dom = !bad && R > 0.0 && (hist[0] == 0.0 || hist[0] == 1.0);
+    dc_gwa_table_out o;
+    SENTINEL(o);
+    const int st = dc_gwa_table_step(p, R, d, hist, &o);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(hist, h0, sizeof hist),
+             FIN(o) && o.F <= 0.0 && o.weight >= 0.0 && o.weight <= 1.0 && fin(hist, 2),
+             GWA_FMT " delta %.17g history %.17g %.17g", GWA_ARGS(p, R), d, h0[0], h0[1]);
+    if (st == DC_OK && dom) {
+      if (p->w == 0.0)
+        FZ_EXPECT(f, o.F == 0.0 && o.kn == 0.0 && o.weight == 0.0 && !memcmp(hist, h0, sizeof hist),
+                  "w = 0: not zero, or the history written", GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
+      else {
+        /* loading while delta >= the largest overlap; the history holds it */
+        FZ_EXPECT(f, (hist[0] == 0.0 || (hist[0] == 1.0 && hist[1] >= d)) && ((h0[0] != 0.0 && d < h0[1]) || o.weight == 0.0),
+                  "history or branch rule broken", GWA_FMT " delta %.17g history %.17g %.17g: weight %.17g, %.17g %.17g",
+                  GWA_ARGS(p, R), d, h0[0], h0[1], o.weight, hist[0], hist[1]);
+        /* loading, or clearly past the blend (2 |delta_break| below the
+           largest overlap): dc_gwa_table_force's value on that branch */
+        const int loading = h0[0] == 0.0 || d >= h0[1];
+        if (loading || d <= h0[1] + 2.0 * p->ub * p->dc_coef * cbrt(R)) {
+          double q[2];
+          const int sq = dc_gwa_table_force(p, R, loading ? DC_GW_LOADING : DC_GW_UNLOADING, d, &q[0], &q[1]);
+          FZ_EXPECT(f, sq == DC_OK && q[0] == o.F && q[1] == o.kn, "differs from dc_gwa_table_force on its branch",
+                    GWA_FMT " delta %.17g weight %.17g: %.17g %.17g vs %.17g %.17g (status %d)", GWA_ARGS(p, R), d,
+                    o.weight, o.F, o.kn, q[0], q[1], sq);
+        }
+      }
+    }
+    FZ_EXPECT(f, st != DC_ERANGE || gwa_bound(p, R) > LOG_MAX - 3.0, "DC_ERANGE for representable results",
+              GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
+    if (st != DC_OK && U() < 0.5) hist[0] = hist[1] = 0.0;
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* rolling_kalker.h                                                   */
+
+/* dc_rolling_material_init sums the creep coefficient series on 129
+   points (~60 us), dc_kalker_coefficients_nu the series at every node
+   (~25 us): 2000 and 5000 calls. */
+#define N_ROLL_MAT 2000L
+#define N_KALKER_NU 5000L
+
+static dc_rolling_material rmpool[8];
+static int nrm;
+static dc_rolling_material rm_out;   /* 4.3 kB */
+
+/* four coefficients c11, c22, c23, c33: finite and positive */
+static int coef4_ok(const double *c) { return fin(c, 4) && c[0] > 0.0 && c[1] > 0.0 && c[2] > 0.0 && c[3] > 0.0; }
+static int kalker_ok(const dc_kalker_coef *c) { return coef4_ok((const double[]){c->c11, c->c22, c->c23, c->c33}); }
+
+/* one body's curvatures in the plane (u, v): a flat, a sphere or any
+   ellipse, now and then concave or wild; d1 unit in the plane */
+static void rolling_curvature(const double *u, const double *v, dc_rolling_curvature *c)
+{
+  const double s = U() < 0.7 ? fz_log(1e-1, 1e4) : fz_log(1e-300, 1e300), r = U();
+  c->k1 = r < 0.15 ? 0.0 : s;
+  c->k2 = r < 0.15 ? 0.0 : r < 0.4 ? c->k1 : c->k1 * (U() < 0.8 ? U() : fz_log(1e-15, 1.0));
+  if (U() < 0.05) c->k2 = -0.5 * U() * c->k1;
+  if (U() < 0.3) { const double t = c->k1; c->k1 = c->k2; c->k2 = t; }
+  const double th = 2.0 * M_PI * U();
+  for (int i = 0; i < 3; i++) c->d1[i] = cos(th) * u[i] + sin(th) * v[i];
+  c->k1 = A(c->k1);
+  c->k2 = A(c->k2);
+  for (int i = 0; i < 3; i++) c->d1[i] = c->k1 == c->k2 && U() < 0.1 ? fz_wild() : A(c->d1[i]);
+}
+
+/* the kinematics' promises: V >= 0, ex unit and in the plane as n is
+   (within 1e-6) for V > 0, zero for V = 0, all finite */
+static int rolling_kin_ok(const dc_rolling_kin *k, const double *n)
+{
+  const double ee = dot3(k->ex, k->ex), nn = dot3(n, n);
+  return FIN(*k) && k->V >= 0.0 &&
+         (k->V > 0.0 ? fabs(ee - 1.0) <= 1e-14 + 4.0 * fabs(nn - 1.0) && fabs(dot3(k->ex, n)) <= 2e-6 : ee == 0.0);
+}
+
+/* its tensor in the plane (u, v) */
+static void rolling_tensor(const dc_rolling_curvature *c, const double *u, const double *v, double K[3])
+{
+  if (c->k1 == c->k2) {
+    K[0] = K[2] = c->k1;
+    K[1] = 0.0;
+    return;
+  }
+  const double x = dot3(c->d1, u), y = dot3(c->d1, v), d = c->k1 - c->k2;
+  K[0] = c->k2 + d * x * x;
+  K[1] = d * x * y;
+  K[2] = c->k2 + d * y * y;
+}
+
+/* d1 as the domain asks (unit, in the plane within 1e-6), or better than
+   tol; a sphere's is not read */
+static int rolling_d1_ok(const dc_rolling_curvature *c, const double *n, double tol)
+{
+  return c->k1 == c->k2 || (fabs(dot3(c->d1, c->d1) - 1.0) <= tol && fabs(dot3(c->d1, n)) <= tol);
+}
+
+static void fuzz_rolling(void)
+{
+  static const char *names[3] = {"coefficientFriction", "rollingVelocityMin", "rollingCreepModel"};
+  fz_fn *f = fz_new("dc_rolling_check");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_rolling_params p = {A(U() < 0.8 ? U() : PICK(0.0, -0.0, 1e300)),
+                                 A(U() < 0.8 ? fz_log(1e-9, 1e-1) : PICK(0.0, DBL_TRUE_MIN, -1e-6)), AI(UI(2))};
+    const fz_spec t[3] = {{names[0], p.mu, 1, nonneg_fin(p.mu)},
+                          {names[1], p.v_min, 1, pos_fin(p.v_min)},
+                          {names[2], p.model, 1, p.model == DC_ROLLING_KALKER || p.model == DC_ROLLING_VJ}};
+    fz_field fl[3];
+    int bad;
+    const int inside = fz_fields(t, 3, 0, fl, &bad);
+    dc_param_error err;
+    SENTINEL(err);
+    const int st = dc_rolling_check(&p, &err);
+    FZ_CHECK(f, st, !ALLFIN(p.mu, p.v_min), inside, 1, 1, "mu %.17g v_min %.17g model %d", p.mu, p.v_min, p.model);
+    FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) && (st == DC_OK ? UNTOUCHED(err) : err_names(&err, fl, 3)),
+              "wrong status or error report", "mu %.17g v_min %.17g model %d: status %d", p.mu, p.v_min, p.model, st);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_rolling_material_init");
+  for (long k = 0; k < N_ROLL_MAT; k++) {
+    fz_call();
+    const double s0 = U() < 0.6 ? fz_log(1e-12, 1e-8) : fz_pos(), nu = U() < 0.8 ? -0.1 + 0.7 * U() : PICK(0.0, 0.5, -0.0);
+    const dc_mindlin_pair m = {A(s0), A(s0 * nu)};
+    const double q = m.s1 / m.s0;
+    const int inside = isfinite(m.s0) && m.s0 > 0.0 && 2.0 / m.s0 <= DBL_MAX && q >= 0.0 && q <= 0.5;
+    dc_param_error err;
+    SENTINEL(err);
+    SENTINEL(rm_out);
+    const int st = dc_rolling_material_init(&m, &rm_out, &err);
+    int ok = FIN(rm_out) && rm_out.G > 0.0 && rm_out.nu >= 0.0 && rm_out.nu <= 0.5;
+    for (int i = 0; ok && i < DC_KALKER_FINE; i++) ok &= coef4_ok(rm_out.fine[i]);
+    ok &= coef4_ok(rm_out.circle);
+    FZ_CHECK(f, st, !ALLFIN(m.s0, m.s1), inside, UNTOUCHED(rm_out), ok, "s0 %.17g s1 %.17g", m.s0, m.s1);
+    FZ_EXPECT(f, st == DC_OK ? UNTOUCHED(err)
+                             : err.name && err.range && (!strcmp(err.name, "poissonsRatio") || !strcmp(err.name, "youngsModulus")),
+              "no error report", "s0 %.17g s1 %.17g: status %d", m.s0, m.s1, st);
+    if (st == DC_OK && ok) {
+      if (nrm < 8) rmpool[nrm++] = rm_out;
+      else if (U() < 0.1) rmpool[UI(8)] = rm_out;
+    }
+  }
+  fz_done(f);
+
+  f = fz_new("dc_kalker_coefficients");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_rolling_material *rm = &rmpool[UI(nrm)];
+    const double g = A(U() < 0.5 ? fz_log(1e-3, 1e3) : U() < 0.5 ? fz_log(1e-150, 1e150)
+                       : PICK(1.0, 0.1, 10.0, 1e-150, 1e150, 0.0));
+    dc_kalker_coef c;
+    SENTINEL(c);
+    const int st = dc_kalker_coefficients(rm, g, &c);
+    FZ_CHECK(f, st, !isfinite(g), g >= 1e-150 && g <= 1e150, UNTOUCHED(c), kalker_ok(&c), "nu %.17g g %.17g", rm->nu, g);
+    FZ_EXPECT(f, st == DC_OK || st == DC_EDOM, "neither DC_OK nor DC_EDOM (its statuses)", "nu %.17g g %.17g", rm->nu, g);
+  }
+  fz_done(f);
+  /* the series; at a material's nu the material's table is within 5e-7 of it */
+  f = fz_new("dc_kalker_coefficients_nu");
+  for (long k = 0; k < N_KALKER_NU; k++) {
+    fz_call();
+    const dc_rolling_material *rm = &rmpool[UI(nrm)];
+    const double g = A(U() < 0.5 ? fz_log(1e-3, 1e3) : U() < 0.5 ? fz_log(1e-150, 1e150) : PICK(1.0, 0.1, 10.0, 1e-150, 1e150));
+    const int same = U() < 0.5;
+    const double nu = same ? rm->nu : A(U() < 0.7 ? 0.5 * U() : PICK(0.0, 0.5, -0.0));
+    dc_kalker_coef c;
+    SENTINEL(c);
+    const int st = dc_kalker_coefficients_nu(g, nu, &c);
+    FZ_CHECK(f, st, !ALLFIN(g, nu), isfinite(g) && g >= 1e-150 && g <= 1e150 && nu >= 0.0 && nu <= 0.5, UNTOUCHED(c),
+             kalker_ok(&c), "g %.17g nu %.17g", g, nu);
+    dc_kalker_coef t;
+    if (same && st == DC_OK && dc_kalker_coefficients(rm, g, &t) == DC_OK) {
+      const double e = fmax(fmax(fabs(t.c11 / c.c11 - 1.0), fabs(t.c22 / c.c22 - 1.0)),
+                            fmax(fabs(t.c23 / c.c23 - 1.0), fabs(t.c33 / c.c33 - 1.0)));
+      FZ_EXPECT(f, e <= 5e-7, "the material's table differs from the series", "g %.17g nu %.17g: %.3g", g, nu, e);
+    }
+  }
+  fz_done(f);
+
+  /* kinematics: two bodies' curvatures with K_i + K_j positive definite
+     (a subset of the domain: the smaller eigenvalue above 1e-11 of the
+     larger, d1 exact), or anything */
+  f = fz_new("dc_rolling_kinematics");
+  fz_fn *fc = fz_new("dc_rolling_kinematics_capped");
+  fc->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    double n[3], u[3], v[3], dv[3], dw[3];
+    unit_vector(n);
+    dc_tangent_basis(n, u, v);
+    dc_rolling_curvature ci, cj;
+    rolling_curvature(u, v, &ci);
+    rolling_curvature(u, v, &cj);
+    const double vs = U() < 0.7 ? fz_log(1e-3, 10.0) : fz_pos(), ws = vs * (U() < 0.7 ? fz_log(1e-1, 1e4) : fz_pos());
+    for (int i = 0; i < 3; i++) {
+      dv[i] = A(vs * (2.0 * U() - 1.0));
+      dw[i] = A(ws * (2.0 * U() - 1.0));
+    }
+    for (int i = 0; i < 3; i++) n[i] = A(n[i]);
+    const int bad = !fin(n, 3) || !fin(dv, 3) || !fin(dw, 3) || !ALLFIN(ci.k1, ci.k2, cj.k1, cj.k2) ||
+                    (ci.k1 != ci.k2 && !fin(ci.d1, 3)) || (cj.k1 != cj.k2 && !fin(cj.d1, 3));
+    double Ki[3], Kj[3], S[3], l1 = NAN, l2 = NAN;
+    rolling_tensor(&ci, u, v, Ki);
+    rolling_tensor(&cj, u, v, Kj);
+    for (int i = 0; i < 3; i++) S[i] = Ki[i] + Kj[i];
+    if (fin(S, 3)) dc_form_principal(S, &l1, &l2, NULL);
+    const int exact = rolling_d1_ok(&ci, n, 1e-14) && rolling_d1_ok(&cj, n, 1e-14);
+    const double nn = dot3(n, n);
+    const int dom = !bad && fabs(nn - 1.0) <= 1e-6 && rolling_d1_ok(&ci, n, 1e-6) && rolling_d1_ok(&cj, n, 1e-6) &&
+                    l2 > 0.0 && l2 > (exact ? 1e-11 : 1e-4) * l1;
+    dc_rolling_kin kk;
+    SENTINEL(kk);
+    const int st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kk);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(kk), rolling_kin_ok(&kk, n),
+             "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g dv (%.17g %.17g %.17g) dw (%.17g %.17g %.17g)", n[0],
+             n[1], n[2], ci.k1, ci.k2, cj.k1, cj.k2, dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
+    /* V <= (|dw| + max|k| |dv|) / l2, slip <= |dv| and spin <= |dw| (times a few) */
+    const double kmax = fmax(fmax(fabs(ci.k1), fabs(ci.k2)), fmax(fabs(cj.k1), fabs(cj.k2)));
+    const double lV = fmax(lg(max_abs3(dw)), lg(kmax) + lg(max_abs3(dv))) + lg(8.0) - lg(l2);
+    const double lsv = fmax(lg(max_abs3(dv)), lg(max_abs3(dw)));
+    FZ_EXPECT(f, st != DC_ERANGE || !dom || lV > LOG_MAX - 2.0 || lsv > LOG_MAX - 2.0,
+              "DC_ERANGE for a representable V", "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g dv max %.17g dw max %.17g",
+              n[0], n[1], n[2], ci.k1, ci.k2, cj.k1, cj.k2, max_abs3(dv), max_abs3(dw));
+    /* capped at R_max (+inf: no cap, a documented input; NaN, <= 0:
+       DC_EDOM); a relative curvature not positive definite gives V = 0 */
+    fc->seconds -= fz_now();
+    const double Rm = A(U() < 0.3 ? INFINITY : U() < 0.3 && l2 > 0.0 ? fz_log(2.0, 1e6) / l2 : fz_log(1e-6, 1e2));
+    const int badc = bad || isnan(Rm) || Rm == -INFINITY;
+    /* a subset of the domain: curvatures and 1/R_max up to 1e300 (sums of
+       them stay finite) */
+    const int domc = !badc && fabs(nn - 1.0) <= 1e-6 && rolling_d1_ok(&ci, n, 1e-6) && rolling_d1_ok(&cj, n, 1e-6) &&
+                     Rm >= 1e-300 && kmax <= 1e300;
+    dc_rolling_kin kc;
+    SENTINEL(kc);
+    const int sc = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, Rm, &kc);
+    FZ_CHECK(fc, sc, badc, domc, UNTOUCHED(kc), rolling_kin_ok(&kc, n),
+             "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g dv (%.17g %.17g %.17g) dw (%.17g %.17g %.17g) R_max %.17g",
+             n[0], n[1], n[2], ci.k1, ci.k2, cj.k1, cj.k2, dv[0], dv[1], dv[2], dw[0], dw[1], dw[2], Rm);
+    /* no cap, or a cap above the relative radii: the plain kinematics bit for bit */
+    if (st == DC_OK && (Rm == INFINITY || (exact && Rm > 0.0 && 1.0 / Rm <= 0.5 * l2)))
+      FZ_EXPECT(fc, sc == DC_OK && !memcmp(&kc, &kk, sizeof kk), "differs from dc_rolling_kinematics without a cap",
+                "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g R_max %.17g", n[0], n[1], n[2], ci.k1, ci.k2, cj.k1,
+                cj.k2, Rm);
+    /* the raised relative curvature is at least 1/R_max (DC_ERANGE also
+       where that bound on V underflows) */
+    const double lVc = fmax(lg(max_abs3(dw)), lg(kmax) + lg(max_abs3(dv))) + lg(8.0) - lg(fmax(l2, 1.0 / Rm));
+    FZ_EXPECT(fc, sc != DC_ERANGE || !domc || !(lVc < LOG_MAX - 2.0) || lVc < log(DBL_TRUE_MIN) || lsv > LOG_MAX - 2.0,
+              "DC_ERANGE for a representable V",
+              "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g dv max %.17g dw max %.17g R_max %.17g", n[0], n[1],
+              n[2], ci.k1, ci.k2, cj.k1, cj.k2, max_abs3(dv), max_abs3(dw), Rm);
+    fc->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the force: creepages from tiny to saturated, patches circular to
+     slender, rolling speeds around v_min */
+  f = fz_new("dc_rolling_force");
+  fz_fn *fa = fz_new("dc_rolling_acts");
+  fa->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_rolling_material *rm = &rmpool[UI(nrm)];
+    const dc_rolling_params p = {A(U() < 0.8 ? U() : PICK(0.0, 1.0)), A(U() < 0.8 ? fz_log(1e-9, 1e-3) : fz_pos()),
+                                 AI(UI(2))};
+    double n[3], u[3], v[3];
+    unit_vector(n);
+    dc_tangent_basis(n, u, v);
+    dc_patch pa;
+    const double a = U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-7, 1e-2) : fz_pos();
+    const double r = U() < 0.3 ? 1.0 : U() < 0.8 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0);
+    pa.a = A(a);
+    pa.b = A(a * r);
+    const double th = 2.0 * M_PI * U(), ph = 2.0 * M_PI * U();
+    for (int i = 0; i < 3; i++) pa.axis[i] = A(r == 1.0 ? 0.0 : cos(th) * u[i] + sin(th) * v[i]);
+    pa.F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
+    pa.F_elastic = pa.F_bound;
+    pa.formed = A(U() < 0.03 ? 0.0 : 1.0);
+    dc_rolling_kin kk;
+    kk.V = A(U() < 0.1 ? PICK(0.0, p.v_min) : U() < 0.7 ? fz_log(1e-6, 10.0) : fz_pos());
+    const double cr = U() < 0.7 ? fz_log(1e-8, 1e-1) : fz_log(1e-300, 1e300), sa = 2.0 * U() - 1.0, sb = 2.0 * U() - 1.0;
+    for (int i = 0; i < 3; i++) {
+      kk.ex[i] = A(cos(ph) * u[i] + sin(ph) * v[i]);
+      kk.slip[i] = A(kk.V * cr * (sa * u[i] + sb * v[i]));
+    }
+    kk.spin = A(kk.V * cr * (2.0 * U() - 1.0) / (a > 0.0 ? a : 1.0));
+    for (int i = 0; i < 3; i++) n[i] = A(n[i]);
+    const int bad = !ALLFIN(p.mu, p.v_min, n[0], n[1], n[2], kk.V, kk.ex[0], kk.ex[1], kk.ex[2], kk.slip[0], kk.slip[1],
+                            kk.slip[2], kk.spin, pa.a, pa.b, pa.F_bound, pa.formed, pa.axis[0], pa.axis[1], pa.axis[2]);
+    /* the header's domain: p checked, n unit, a >= b (b > 0 and b >= 1e-150
+       a formed), F_b >= 0, a unit axis in the plane for a > b, ex unit in
+       the plane when the law acts (from the kinematics) */
+    const int acts = pa.formed != 0.0 && pa.a != 0.0 && kk.V > p.v_min;
+    const double nn = dot3(n, n), ee = dot3(kk.ex, kk.ex), en = dot3(kk.ex, n);
+    const double xx = dot3(pa.axis, pa.axis), xn = dot3(pa.axis, n);
+    const int dom = !bad && p.mu >= 0.0 && p.v_min > 0.0 && (p.model == DC_ROLLING_KALKER || p.model == DC_ROLLING_VJ) &&
+                    fabs(nn - 1.0) <= 1e-6 && kk.V >= 0.0 && pa.a >= pa.b && pa.b >= 0.0 && pa.F_bound >= 0.0 &&
+                    (pa.formed == 0.0 || (pa.b > 0.0 && pa.b >= 1e-150 * pa.a)) && (pa.a == pa.b || (fabs(xx - 1.0) <= 1e-6 && fabs(xn) <= 1e-6)) &&
+                    (!acts || (fabs(ee - 1.0) <= 1e-6 && fabs(en) <= 1e-6));
+    dc_rolling_out o;
+    SENTINEL(o);
+    const int st = dc_rolling_force(&p, rm, &pa, n, &kk, &o);
+    /* the hand-over rule: any input (no domain check), the force's flag */
+    fa->seconds -= fz_now();
+    const int act = dc_rolling_acts(&p, &pa, &kk);
+    fa->calls++;
+    FZ_EXPECT(fa, act == !(pa.formed == 0.0 || pa.a == 0.0 || kk.V <= p.v_min) && (st != DC_OK || act == o.rolling),
+              "not the zero rule, or not the force's flag", "v_min %.17g a %.17g formed %.17g V %.17g: %d (force %d, status %d)",
+              p.v_min, pa.a, pa.formed, kk.V, act, o.rolling, st);
+    fa->seconds += fz_now();
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(o),
+             FIN(o.F) && ALLFIN(o.Mz, o.Fx, o.Fy, o.xi_x, o.xi_y, o.phi, o.saturation) && FIN(o.c) &&
+                 (o.rolling == 0 || o.rolling == 1),
+             "mu %.17g v_min %.17g model %d nu %.17g a %.17g b %.17g F_b %.17g formed %.17g V %.17g slip (%.17g %.17g %.17g) spin %.17g",
+             p.mu, p.v_min, p.model, rm->nu, pa.a, pa.b, pa.F_bound, pa.formed, kk.V, kk.slip[0], kk.slip[1], kk.slip[2],
+             kk.spin);
+    if (st == DC_OK && dom) {
+      int pr = o.rolling == acts;
+      if (!acts) {
+        dc_rolling_out z;
+        memset(&z, 0, sizeof z);
+        pr &= !memcmp(&o, &z, sizeof z);
+      } else {
+        /* |F| <= mu F_b, |Mz| <= M_s = 3/8 mu F_b a E(e^2), F in the plane */
+        const double muF = p.mu * pa.F_bound, F = hypot(hypot(o.F[0], o.F[1]), o.F[2]);
+        double Ms = 3.0 * M_PI / 16.0 * muF * pa.a;
+        dc_ellint el;
+        if (pa.b < pa.a && dc_ellint_m1((pa.b / pa.a) * (pa.b / pa.a), &el) == DC_OK) Ms = 0.375 * muF * pa.a * el.E;
+        pr &= o.saturation >= 0.0 && o.saturation <= 1.0 && kalker_ok(&o.c) && F <= muF * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN &&
+              (!isfinite(Ms) || fabs(o.Mz) <= Ms * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN);
+        if (F > 1e3 * DBL_MIN) pr &= fabs(o.F[0] / F * n[0] + o.F[1] / F * n[1] + o.F[2] / F * n[2]) <= 4e-6;
+      }
+      FZ_EXPECT(f, pr, "not the law's promises (acting, zeros, bounds, plane)",
+                "mu %.17g v_min %.17g model %d a %.17g b %.17g F_b %.17g formed %.17g V %.17g: rolling %d F (%.17g %.17g %.17g) Mz %.17g",
+                p.mu, p.v_min, p.model, pa.a, pa.b, pa.F_bound, pa.formed, kk.V, o.rolling, o.F[0], o.F[1], o.F[2], o.Mz);
+    }
+    /* DC_ERANGE where mu F_b, a creepage (slip/V, spin/V) or the moment
+       (the linear G c^3 (c23 xi + c c33 phi), c = (a b)^1/2, the
+       coefficients below 10 (a/b)^3/2, capped at M_s ~ mu F_b a) can
+       overflow */
+    const double lxi = lg(max_abs3(kk.slip)) - lg(kk.V), lphi = lg(kk.spin) - lg(kk.V), lc = 0.5 * (lg(pa.a) + lg(pa.b));
+    const double lcoef = 1.5 * (lg(pa.a) - lg(pa.b)) + lg(10.0);
+    const double lM = fmin(lg(rm->G) + 3.0 * lc + lcoef + fmax(lxi, lc + lphi) + 2.0, lg(p.mu) + lg(pa.F_bound) + lg(pa.a));
+    const double big = fmax(fmax(lg(p.mu) + lg(pa.F_bound), lM), fmax(lxi, lphi));
+    FZ_EXPECT(f, st != DC_ERANGE || big > LOG_MAX - 2.0, "DC_ERANGE for representable results",
+              "mu %.17g v_min %.17g model %d nu %.17g a %.17g b %.17g F_b %.17g formed %.17g V %.17g slip (%.17g %.17g %.17g) spin %.17g",
+              p.mu, p.v_min, p.model, rm->nu, pa.a, pa.b, pa.F_bound, pa.formed, kk.V, kk.slip[0], kk.slip[1], kk.slip[2],
+              kk.spin);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
 /* The reported cases, by name (the sweeps above find them too).     */
 
 static void known_cases(void)
@@ -1957,6 +3388,25 @@ int main(void)
   dc_jkr_geom jg;
   dc_jkr_geometry(1e-3, 1e-3, 1e9, 0.05, &jg); pool_jkr(&jg);
   dc_jkr_geometry(1e-3, 2e-4, 1e9, 0.05, &jg); pool_jkr(&jg);
+  dc_param_error err;
+  dc_classical_normal_params cn = {DC_CLASSICAL_LSD, DC_CLASSICAL_K_GIVEN, DC_DAMPING_NONE, 0, 1e11, 1e5, 1.0, 0.5, 0.0, 0.0, 0.0};
+  dc_classical_normal_init(&cn, &cnpool[ncn++], &err);
+  cn.law = DC_CLASSICAL_HERTZ;
+  cn.damping = DC_DAMPING_RESTITUTION;
+  dc_classical_normal_init(&cn, &cnpool[ncn++], &err);
+  cn.law = DC_CLASSICAL_HLS_CONSTANT;
+  cn.stiffness = DC_CLASSICAL_K_ENERGY;
+  dc_classical_normal_init(&cn, &cnpool[ncn++], &err);
+  const dc_classical_tangential_params ct = {DC_CT_SPRING_DASHPOT_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_RESTITUTION, 0.5, 1e5,
+                                             0.0, 0.5, 3e10, 1e11, 0.0, 0.0};
+  dc_classical_tangential_init(&ct, &ctpool[nct++], &err);
+  const dc_gw_plastic_params gp = dc_gw_plastic_default_params(2e9, 0.3);
+  dc_gw_plastic_summit_init(&hpool[0], 1e11, &gp, &spool[nsp++]);
+  dc_gw_table_init(4.0, &tlpool[ntl++]);
+  dc_gwa_table_pair_init(1e9, 0.05, 1e-8, 1e4, &gapool[nga++]);
+  dc_gwa_table_pair_init(1e9, 0.0, 1e-8, 1e4, &gapool[nga++]);
+  const dc_mindlin_pair mp = {1e-10, 2e-11};
+  dc_rolling_material_init(&mp, &rmpool[nrm++], &err);
 
   known_cases();
   fuzz_status_str();
@@ -1990,6 +3440,12 @@ int main(void)
   fuzz_cmd();
   fuzz_jamari();
   fuzz_root_find();
+  fuzz_classical_normal();
+  fuzz_classical_tangential();
+  fuzz_gw_rough_plastic();
+  fuzz_gw_table();
+  fuzz_gwa_table();
+  fuzz_rolling();
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",
          "seconds");
