@@ -108,14 +108,22 @@ int dc_classical_tangential_init(const dc_classical_tangential_params *p, dc_cla
 }
 
 /* |v| without overflow or underflow of the squares. */
-static double norm3(const double *v)
+/* |v| without overflow or underflow: the scaled form where v.v leaves the
+   normal range. */
+static double norm3_scaled(const double *v)
 {
-  const double s = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-  if (s >= DBL_MIN && s <= DBL_MAX) return sqrt(s);
   double mx = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
   if (mx == 0.0 || !isfinite(mx)) return mx;
   const double a = v[0] / mx, b = v[1] / mx, c = v[2] / mx;
   return mx * sqrt(a * a + b * b + c * c);
+}
+
+static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static inline double norm3(const double *v)
+{
+  const double s = dot3(v, v);
+  return s >= DBL_MIN && s <= DBL_MAX ? sqrt(s) : norm3_scaled(v);
 }
 
 static int finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
@@ -124,11 +132,17 @@ static int finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) &&
    (LIGGGHTS' rotation of the shear history). */
 static void turn_into_plane(double *v, const double *n)
 {
-  const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const double vn = dot3(v, n);
   if (vn == 0.0) return;   /* in the plane already (or zero) */
-  const double len = norm3(v);
   double w[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
-  const double lw = norm3(w);
+  const double len2 = dot3(v, v), lw2 = dot3(w, w);
+  const double q = len2 / lw2;
+  if (len2 >= DBL_MIN && len2 <= DBL_MAX && lw2 >= DBL_MIN && lw2 <= DBL_MAX && q <= DBL_MAX) {   /* one root */
+    const double f = sqrt(q);
+    for (int k = 0; k < 3; k++) v[k] = w[k] * f;
+    return;
+  }
+  const double len = norm3(v), lw = norm3(w);
   if (!(lw > 0.0)) { v[0] = v[1] = v[2] = 0.0; return; }
   const double f = len / lw;
   for (int k = 0; k < 3; k++) v[k] = w[k] * f;
@@ -144,13 +158,15 @@ static void store(int law, const dc_classical_tangential_state *s, dc_classical_
 
 static void project_plane(double *v, const double *n)
 {
-  const double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
+  const double vn = dot3(v, n);
   for (int k = 0; k < 3; k++) v[k] -= vn * n[k];
 }
 
 /* Scales F onto |F| = lim when it exceeds it; 1 if it did. */
 static int limit_force(double *F, double lim)
 {
+  const double f2 = dot3(F, F), lim2 = lim * lim;
+  if (f2 <= lim2 && lim2 <= DBL_MAX && (f2 >= DBL_MIN || f2 == 0.0) && lim2 >= DBL_MIN) return 0;   /* no root */
   const double f = norm3(F);
   if (!(f > lim)) return 0;
   if (lim == 0.0) { F[0] = F[1] = F[2] = 0.0; return 1; }
