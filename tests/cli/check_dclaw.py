@@ -6,25 +6,20 @@ are not numbers or not valid counts, must exit 2 with a message naming the
 key; good inputs must exit 0 with finite CSV; spherical Hertz and JKR rows
 must match the closed forms computed here."""
 import math
+import os
 import shlex
-import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_checks  # noqa: E402
+from cli_checks import check, finish  # noqa: E402
+
 EXE = sys.argv[1]
-counts = {"passed": 0, "failed": 0}
-
-
-def check(ok, what):
-    """Counts one check and prints it if it failed."""
-    counts["passed" if ok else "failed"] += 1
-    if not ok:
-        print("FAIL:", what)
 
 
 def run(args):
     """Runs dclaw with args; returns (exit code, stdout, stderr)."""
-    p = subprocess.run([EXE] + args, capture_output=True, text=True, timeout=120)
-    return p.returncode, p.stdout, p.stderr
+    return cli_checks.run(EXE, args, timeout=120)
 
 
 def csv(out):
@@ -168,5 +163,4 @@ head, rows = csv(out)
 got = dict(zip(head, rows[0]))
 check(rc == 0 and 0 < got["delta_res"] < got["delta_peak"] and got["energy"] > 0, "plastic cycle: %r" % got)
 
-print("%d passed, %d failed" % (counts["passed"], counts["failed"]))
-sys.exit(1 if counts["failed"] else 0)
+finish()

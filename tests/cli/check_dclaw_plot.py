@@ -12,27 +12,20 @@ import csv
 import os
 import shlex
 import struct
-import subprocess
 import sys
 import tempfile
 import zlib
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import cli_checks  # noqa: E402
+from cli_checks import check, finish  # noqa: E402
+
 EXE = sys.argv[1]
-counts = {"passed": 0, "failed": 0}
-
-
-def check(ok, what):
-    """Counts one check and prints it if it failed."""
-    counts["passed" if ok else "failed"] += 1
-    if not ok:
-        print("FAIL:", what)
 
 
 def run(args, env=None):
     """Runs dclaw with args (and extra environment); returns (exit code, stdout, stderr)."""
-    p = subprocess.run([EXE] + args, capture_output=True, text=True, timeout=300,
-                       env=dict(os.environ, **(env or {})))
-    return p.returncode, p.stdout, p.stderr
+    return cli_checks.run(EXE, args, env)
 
 
 def table(args):
@@ -241,5 +234,4 @@ with tempfile.TemporaryDirectory() as tmp:
     rc, out, _ = run(["--help"])
     check(rc == 0 and "dclaw plot --png FILE" in out, "dclaw --help names plot: %r" % out)
 
-print("%d passed, %d failed" % (counts["passed"], counts["failed"]))
-sys.exit(1 if counts["failed"] else 0)
+finish()
