@@ -1,6 +1,7 @@
 /* The adhesive part of the rough contact with circular JKR summits,
    tabulated in (x, eta): see dc/gw_rough_adhesive_table.h. */
 #include "dc/gw_rough_adhesive_table.h"
+#include "dc/gw_integrals.h"
 #include "dc/gw_rough_adhesive.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/status.h"
@@ -10,6 +11,9 @@
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
    against dc_jkr_geometry) */
 #define DC_GWA_UB (-0.375 * 4.60115111447049)
+/* c_H = 4/(3 pi 2^3/2): the summits' Hertz force n_asp F_s c_H tau^3/2
+   F_3/2(h) is the closed form of dc_gw_rough_elliptic */
+#define DC_GWA_CH 0.15005271935951767
 
 const dc_history_field dc_gwa_table_history[DC_GWA_TABLE_HISTORY_NFIELDS] = {
   {"gwa_touched", 0},
@@ -52,20 +56,88 @@ static inline void hermite(double t, double f0, double d0, double f1, double d1,
   if (dv) *dv = (6 * t2 - 6 * t) * f0 + (3 * t2 - 4 * t + 1) * d0 + (-6 * t2 + 6 * t) * f1 + (3 * t2 - 2 * t) * d1;
 }
 
-/* dx/dc at node i in the coordinate c of a deep (log2) or near cell */
-static inline double node_dxdc(int i, int deep)
+/* quintic step: 1 for z <= 0, 0 for z >= 1, and its derivative */
+static inline double step_down(double z, double *dz)
 {
-  if (deep) return -dc_gwa_table_x_node(i) * M_LN2 / DC_GWA_TABLE_PER_OCTAVE;
-  return 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  if (z <= 0.0) { *dz = 0.0; return 1.0; }
+  if (z >= 1.0) { *dz = 0.0; return 0.0; }
+  *dz = -30.0 * z * z * (1.0 - z) * (1.0 - z);
+  return 1.0 - z * z * z * (10.0 + z * (6.0 * z - 15.0));
 }
 
-/* L and dL/dc at node i, eta cell j position u; then across cell i..i+1 */
-static void eta_interp(int b, int i, int j, double u, int deep, double *L, double *Lc)
+void dc_gwa_table_kink(double x, double eta, double *C, double *Cx)
 {
-  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, s = node_dxdc(i, deep);
-  const double *a = dc_gwa_table_data[b][j][i], *c = dc_gwa_table_data[b][j + 1][i];
-  hermite(u, a[0], a[2] * de, c[0], c[2] * de, L, NULL);
-  hermite(u, a[1] * s, a[3] * s * de, c[1] * s, c[3] * s * de, Lc, NULL);
+  const double wl = DC_GWA_KINK_W_HI - DC_GWA_KINK_W_LO, kl = DC_GWA_KINK_K_HI - DC_GWA_KINK_K_LO;
+  double dw, dk;
+  const double w = step_down((x - DC_GWA_KINK_W_LO) / wl, &dw);
+  const double K = step_down((eta - DC_GWA_KINK_K_LO) / kl, &dk);
+  *C = 0.0;
+  *Cx = 0.0;
+  if (K == 0.0 || (w == 0.0 && dw == 0.0)) return;
+  const double tau = exp(eta), h = x - DC_GWA_UB / tau;
+  const double b = DC_GWA_KINK_B / tau, s = sqrt(1.0 + K * b * b), rs = sqrt(s);
+  double F[4], Fs[4];
+  dc_gw_F_all(h, F);
+  dc_gw_F_all(h / s, Fs);
+  const double k = DC_GWA_CH * tau * sqrt(tau);
+  const double P = k * (F[DC_GW_F32] - s * rs * Fs[DC_GW_F32]);
+  const double Px = 1.5 * k * (rs * Fs[DC_GW_F12] - F[DC_GW_F12]);
+  *C = w * P;
+  *Cx = w * Px + dw / wl * P;
+}
+
+/* near region: L and dL/dx at x in [X_LO, X_HI], eta cell j at ue */
+static void near_interp(int b, double x, int j, double ue, double *L, double *Lx)
+{
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  const double c = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
+  int i = (int)c;
+  if (i < 0) i = 0;
+  if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
+  double v[2], d[2];
+  for (int k = 0; k < 2; k++) {
+    const double *a = dc_gwa_table_near[b][j][i + k], *e = dc_gwa_table_near[b][j + 1][i + k];
+    hermite(ue, a[0], a[2] * de, e[0], e[2] * de, &v[k], NULL);
+    hermite(ue, a[1] * dx, a[3] * dx * de, e[1] * dx, e[3] * dx * de, &d[k], NULL);
+  }
+  double Lc;
+  hermite(c - i, v[0], d[0], v[1], d[1], L, &Lc);
+  *Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
+}
+
+/* deep region: bicubic in (u, eta), u = ln(-x) + eta, whose nodes on row
+   j + 1 are those of row j three places shallower; x < 0 */
+static void deep_interp(int b, double x, int j, double ue, double *L, double *Lx)
+{
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
+  const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
+  const double c = DC_GWA_TABLE_U_PER_UNIT * (log(x / DC_GWA_TABLE_X_B) + ue * de) - DC_GWA_TABLE_K_MIN;
+  int m = (int)c;
+  if (m < sh) m = sh;
+  if (m > DC_GWA_TABLE_NDEEP - 2) m = DC_GWA_TABLE_NDEEP - 2;
+  double v[2], d[2];
+  for (int k = 0; k < 2; k++) {
+    const double *a = dc_gwa_table_deep[b][j][m + k], *e = dc_gwa_table_deep[b][j + 1][m + k - sh];
+    hermite(ue, a[0], a[2] * de, e[0], e[2] * de, &v[k], NULL);
+    hermite(ue, a[1] * du, a[3] * du * de, e[1] * du, e[3] * du * de, &d[k], NULL);
+  }
+  double Lc;
+  hermite(c - m, v[0], d[0], v[1], d[1], L, &Lc);
+  *Lx = Lc * DC_GWA_TABLE_U_PER_UNIT / x;
+}
+
+/* L = ln(-T) and dL/dx on the table's x range, eta cell j at ue */
+static void table_L(int b, double x, int j, double ue, double *L, double *Lx)
+{
+  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, j, ue, L, Lx); return; }
+  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, j, ue, L, Lx); return; }
+  double Ln, Lnx, Ld, Ldx, dw;
+  const double bl = DC_GWA_TABLE_BLEND_HI - DC_GWA_TABLE_BLEND_LO;
+  const double w = step_down((x - DC_GWA_TABLE_BLEND_LO) / bl, &dw);   /* weight of deep */
+  near_interp(b, x, j, ue, &Ln, &Lnx);
+  deep_interp(b, x, j, ue, &Ld, &Ldx);
+  *L = Ln + w * (Ld - Ln);
+  *Lx = Lnx + w * (Ldx - Lnx) + dw / bl * (Ld - Ln);
 }
 
 /* one summit's fbar - fbar_Hertz at reduced overlap d = delta/delta_c > 0
@@ -106,7 +178,7 @@ static void summit_g(double d, double *g, double *gd)
   *gd = (M_PI / 3.0) * Tp * (-1.5 * eps / A) / (4.0 * A - 0.5 * M_PI / y);
 }
 
-/* G and dG/dx, unchecked; eta clamped; tau_ub = -ub (unloading shift in d) */
+/* G and dG/dx, unchecked; eta clamped */
 static void reduced(int b, double x, double eta, double *G, double *Gx)
 {
   const double emax = DC_GWA_TABLE_ETA_LO + (double)(DC_GWA_TABLE_NETA - 1) / DC_GWA_TABLE_ETA_PER_UNIT;
@@ -116,52 +188,37 @@ static void reduced(int b, double x, double eta, double *G, double *Gx)
   int j = (int)ue;
   if (j > DC_GWA_TABLE_NETA - 2) j = DC_GWA_TABLE_NETA - 2;
   ue -= j;
-  const double x_end = dc_gwa_table_x_node(0);
+  const double x_end = dc_gwa_table_x_deep(DC_GWA_TABLE_K_END);
+  double L, Lx;
   if (x > DC_GWA_TABLE_X_HI) {
-    double L, Lc;
-    eta_interp(b, DC_GWA_TABLE_NX - 1, j, ue, 0, &L, &Lc);
-    const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
-    const double Lv = L + Lx * (x - DC_GWA_TABLE_X_HI);
-    *G = -exp(Lv);
+    /* L continued linearly (C1); the kink term vanishes here */
+    near_interp(b, DC_GWA_TABLE_X_HI, j, ue, &L, &Lx);
+    *G = -exp(L + Lx * (x - DC_GWA_TABLE_X_HI));
     *Gx = *G * Lx;
     return;
   }
   if (x < x_end) {
     /* every summit pressed: one summit at the mean compression */
-    const double ub = DC_GWA_UB;
-    const double tau = exp(eta), shift = b == DC_GW_UNLOADING ? ub : 0.0;
-    double L, Lc, g, gd, g0, gd0;
-    eta_interp(b, 0, j, ue, 1, &L, &Lc);
+    const double tau = exp(eta), shift = b == DC_GW_UNLOADING ? DC_GWA_UB : 0.0;
+    double g, gd, g0, gd0, C = 0.0, Cx;
+    deep_interp(b, x_end, j, ue, &L, &Lx);
+    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x_end, eta, &C, &Cx);
     summit_g(-tau * x_end + shift, &g0, &gd0);
     summit_g(-tau * x + shift, &g, &gd);
-    const double q = x_end / x, q2 = q * q, corr = (-exp(L) - g0) * q2 * sqrt(sqrt(q2 * q2 * q2 / q));
+    const double q = x_end / x, q2 = q * q, corr = (-exp(L) - C - g0) * q2 * sqrt(sqrt(q2 * q2 * q2 / q));
     *G = g + corr;
     *Gx = -tau * gd - 2.75 * corr / x;
     return;
   }
-  int i;
-  double t;
-  if (x < DC_GWA_TABLE_X_LO) {
-    const double c = DC_GWA_TABLE_NDEEP - DC_GWA_TABLE_PER_OCTAVE * log2(x / DC_GWA_TABLE_X_LO);
-    i = (int)c;
-    if (i < 0) i = 0;
-    if (i > DC_GWA_TABLE_NDEEP - 1) i = DC_GWA_TABLE_NDEEP - 1;
-    t = c - i;
-  } else {
-    const double c = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
-    i = (int)c;
-    if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
-    t = c - i;
-    i += DC_GWA_TABLE_NDEEP;
-  }
-  double L0, Lc0, L1, Lc1, L, Lc;
-  const int deep = x < DC_GWA_TABLE_X_LO;
-  eta_interp(b, i, j, ue, deep, &L0, &Lc0);
-  eta_interp(b, i + 1, j, ue, deep, &L1, &Lc1);
-  hermite(t, L0, Lc0, L1, Lc1, &L, &Lc);
-  const double dxdc = x < DC_GWA_TABLE_X_LO ? -x * M_LN2 / DC_GWA_TABLE_PER_OCTAVE : 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  table_L(b, x, j, ue, &L, &Lx);
   *G = -exp(L);
-  *Gx = *G * Lc / dxdc;
+  *Gx = *G * Lx;
+  if (b == DC_GW_UNLOADING) {
+    double C, Cx;
+    dc_gwa_table_kink(x, eta, &C, &Cx);
+    *G -= C;
+    *Gx -= Cx;
+  }
 }
 
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
