@@ -283,6 +283,24 @@ static void test_w_zero_and_domain(void)
   double h2[2] = {1.0, 1e-7};
   CHECK(dc_gwa_table_step(&p, 1e-3, INFINITY, h2, &o) == DC_EDOM && h2[0] == 1.0 && h2[1] == 1e-7);
   CHECK(dc_gwa_table_reduced(0, NAN, 0.0, &F, &kn) == DC_EDOM);
+  /* the radius kept: the same bits as setting it up at each step */
+  dc_gwa_table_radius r, r0;
+  memset(&r, 0x5a, sizeof r);
+  r0 = r;
+  CHECK(dc_gwa_table_radius_init(&p, -1e-3, &r) == DC_EDOM && memcmp(&r, &r0, sizeof r) == 0);
+  CHECK(dc_gwa_table_radius_init(&p, INFINITY, &r) == DC_EDOM && memcmp(&r, &r0, sizeof r) == 0);
+  CHECK(dc_gwa_table_radius_init(&p, 1e-3, &r) == DC_OK);
+  CHECK(r.reach == dc_gwa_table_reach(&p, 1e-3));
+  double ha[2] = {0, 0}, hb[2] = {0, 0};
+  int same = 1;
+  for (int i = 0; i < 3000; i++) {
+    const double d = 1e-7 * (-9.0 + 12.0 * fabs(sin(0.01 * i)));
+    dc_gwa_table_out oa, ob;
+    CHECK(dc_gwa_table_step(&p, 1e-3, d, ha, &oa) == DC_OK);
+    CHECK(dc_gwa_table_step_radius(&p, &r, d, hb, &ob) == DC_OK);
+    if (memcmp(&oa, &ob, sizeof oa) != 0 || memcmp(ha, hb, sizeof ha) != 0) same = 0;
+  }
+  CHECK(same);
 }
 
 /* never NaN: random and edge inputs, any eta (clamped), any x */
@@ -317,15 +335,40 @@ static void test_never_nan(void)
   CHECK(bad == 0);
 }
 
+/* ns per step along a press-and-release cycle (-6 to 1.5 sigma), the
+   radius set up once as a DEM wrapper keeps it */
+static double bench_steps(double E, double w, double sigma, double R, double *eta, double *sum)
+{
+  dc_gwa_table_pair p;
+  dc_gwa_table_pair_init(E, w, sigma, 100.0, &p);
+  dc_gwa_table_radius r;
+  dc_gwa_table_radius_init(&p, R, &r);
+  *eta = r.cell.eta;
+  const int N = 400000;
+  double hist[2] = {0, 0};
+  dc_gwa_table_out o;
+  const double t0 = now();
+  for (int i = 0; i < N; i++) {
+    const double ph = (i % 2000) / 2000.0;
+    dc_gwa_table_step_radius(&p, &r, sigma * (-6.0 + 7.5 * (ph < 0.5 ? 2 * ph : 2 - 2 * ph)), hist, &o);
+    *sum += o.F;
+  }
+  return (now() - t0) / N * 1e9;
+}
+
 static void bench(void)
 {
   const double R = 1e-3, sigma = 1e-7, E = 1e9, w = 0.1, n = 100.0;
+  double s = 0, eta_a, eta_b;
+  /* tau ~ 37: no kink term; tau ~ 5: the kink term on unloading */
+  const double t_a = bench_steps(E, 0.05 * w, sigma, R, &eta_a, &s);
+  const double t_b = bench_steps(E, w, sigma, R, &eta_b, &s);
   dc_gwa_table_pair p;
   dc_gwa_table_pair_init(E, w, sigma, n, &p);
   dc_jkr_geom g;
   dc_jkr_geometry(R, R, E, w, &g);
   const int N = 400000;
-  double s = 0, hist[2] = {0, 0};
+  double hist[2] = {0, 0};
   dc_gwa_table_out o;
   double t0 = now();
   for (int i = 0; i < N; i++) {
@@ -348,8 +391,9 @@ static void bench(void)
     s += as.F;
   }
   const double t_ex = (now() - t0) / M * 1e9;
-  printf("ns per call: table step %.0f, elastic gw_rough_elliptic %.0f, exact gw_rough_adhesive %.0f (checksum %g)\n",
-         t_tab, t_el, t_ex, s);
+  printf("ns per call: table step with the radius kept %.0f (eta %.2f), %.0f (eta %.2f, kink term); with the radius "
+         "set up each call %.0f; elastic gw_rough_elliptic %.0f; exact gw_rough_adhesive %.0f (checksum %g)\n",
+         t_a, eta_a, t_b, eta_b, t_tab, t_el, t_ex, s);
 }
 
 int main(void)
