@@ -15,7 +15,7 @@
    in u = ln(-x) + eta: dL/du, dL/d eta at fixed u, d2L/du d eta. x
    derivatives from the law's kn; eta derivatives by the 4-point central
    difference with step 1e-3 (truncation below 1e-12). Units of the
-   evaluation: E* = R = w = n_asp = 1. About 20 s.
+   evaluation: E* = R = w = n_asp = 1. About 5 s.
    Regenerate (from the repository root, library built in B):
      cc -O2 -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gen_gw_rough_adhesive_table.c \
         B/c_core/libdemcontact.a -lgsl -lgslcblas -lm -o /tmp/gen_gwa && \
