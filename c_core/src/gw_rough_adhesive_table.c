@@ -1,6 +1,7 @@
 /* The adhesive part of the rough contact with circular JKR summits,
    tabulated in (x, eta): see dc/gw_rough_adhesive_table.h. */
 #include "dc/gw_rough_adhesive_table.h"
+#include "dc/gw_integrals.h"
 #include "dc/gw_rough_adhesive.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/status.h"
@@ -11,6 +12,9 @@
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
    against dc_jkr_geometry) */
 #define DC_GWA_UB (-0.375 * 4.60115111447049)
+/* c_H = 4/(3 pi 2^3/2): the summits' Hertz force n_asp F_s c_H tau^3/2
+   F_3/2(h) is the closed form of dc_gw_rough_elliptic */
+#define DC_GWA_CH 0.15005271935951767
 
 const dc_history_field dc_gwa_table_history[DC_GWA_TABLE_HISTORY_NFIELDS] = {
   {"gwa_touched", 0},
@@ -56,20 +60,110 @@ static inline void hermite(double t, double f0, double d0, double f1, double d1,
   if (dv) *dv = (6 * t2 - 6 * t) * f0 + (3 * t2 - 4 * t + 1) * d0 + (-6 * t2 + 6 * t) * f1 + (3 * t2 - 2 * t) * d1;
 }
 
-/* dx/dc at node i in the coordinate c of a deep (log2) or near cell */
-static inline double node_dxdc(int i, int deep)
+/* quintic step: 1 for z <= 0, 0 for z >= 1, and its derivative */
+static inline double step_down(double z, double *dz)
 {
-  if (deep) return -dc_gwa_table_x_node(i) * M_LN2 / DC_GWA_TABLE_PER_OCTAVE;
-  return 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  if (z <= 0.0) { *dz = 0.0; return 1.0; }
+  if (z >= 1.0) { *dz = 0.0; return 0.0; }
+  *dz = -30.0 * z * z * (1.0 - z) * (1.0 - z);
+  return 1.0 - z * z * z * (10.0 + z * (6.0 * z - 15.0));
 }
 
-/* L and dL/dc at node i, eta cell j position u; then across cell i..i+1 */
-static void eta_interp(int b, int i, int j, double u, int deep, double *L, double *Lc)
+void dc_gwa_table_kink(double x, double eta, double *C, double *Cx)
 {
-  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, s = node_dxdc(i, deep);
-  const double *a = dc_gwa_table_data[b][j][i], *c = dc_gwa_table_data[b][j + 1][i];
-  hermite(u, a[0], a[2] * de, c[0], c[2] * de, L, NULL);
-  hermite(u, a[1] * s, a[3] * s * de, c[1] * s, c[3] * s * de, Lc, NULL);
+  const double wl = DC_GWA_KINK_W_HI - DC_GWA_KINK_W_LO, kl = DC_GWA_KINK_K_HI - DC_GWA_KINK_K_LO;
+  double dw, dk;
+  const double w = step_down((x - DC_GWA_KINK_W_LO) / wl, &dw);
+  const double K = step_down((eta - DC_GWA_KINK_K_LO) / kl, &dk);
+  *C = 0.0;
+  *Cx = 0.0;
+  if (K == 0.0 || (w == 0.0 && dw == 0.0)) return;
+  const double tau = exp(eta), h = x - DC_GWA_UB / tau;
+  const double b = DC_GWA_KINK_B / tau, s = sqrt(1.0 + K * b * b), rs = sqrt(s);
+  double F[4], Fs[4];
+  dc_gw_F_all(h, F);
+  dc_gw_F_all(h / s, Fs);
+  const double k = DC_GWA_CH * tau * sqrt(tau);
+  const double P = k * (F[DC_GW_F32] - s * rs * Fs[DC_GW_F32]);
+  const double Px = 1.5 * k * (rs * Fs[DC_GW_F12] - F[DC_GW_F12]);
+  *C = w * P;
+  *Cx = w * Px + dw / wl * P;
+}
+
+/* eta clamped to the table, its cell j and position ue, and the cubic
+   Hermite weights at ue of a row's value, its eta slope, the next row's
+   value and slope */
+static void eta_cell(double eta, dc_gwa_table_eta *c)
+{
+  const double emax = DC_GWA_TABLE_ETA_LO + (double)(DC_GWA_TABLE_NETA - 1) / DC_GWA_TABLE_ETA_PER_UNIT;
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT;
+  if (eta < DC_GWA_TABLE_ETA_LO) eta = DC_GWA_TABLE_ETA_LO;
+  if (eta > emax) eta = emax;
+  c->eta = eta;
+  double ue = (eta - DC_GWA_TABLE_ETA_LO) * DC_GWA_TABLE_ETA_PER_UNIT;
+  int j = (int)ue;
+  if (j > DC_GWA_TABLE_NETA - 2) j = DC_GWA_TABLE_NETA - 2;
+  ue -= j;
+  const double u2 = ue * ue, u3 = u2 * ue;
+  c->j = j;
+  c->ue = ue;
+  c->w[0] = 2 * u3 - 3 * u2 + 1;
+  c->w[1] = (u3 - 2 * u2 + ue) * de;
+  c->w[2] = -2 * u3 + 3 * u2;
+  c->w[3] = (u3 - u2) * de;
+}
+
+/* a node pair (rows j and j + 1): L and its x (or u) slope at ue */
+static inline void eta_mix(const dc_gwa_table_eta *c, const double *a, const double *e, double *v, double *d)
+{
+  *v = c->w[0] * a[0] + c->w[1] * a[2] + c->w[2] * e[0] + c->w[3] * e[2];
+  *d = c->w[0] * a[1] + c->w[1] * a[3] + c->w[2] * e[1] + c->w[3] * e[3];
+}
+
+/* near region: L and dL/dx at x in [X_LO, X_HI] */
+static inline void near_interp(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+{
+  const double dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
+  int i = (int)cx;
+  if (i < 0) i = 0;
+  if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
+  double v0, d0, v1, d1, Lc;
+  eta_mix(c, dc_gwa_table_near[b][c->j][i], dc_gwa_table_near[b][c->j + 1][i], &v0, &d0);
+  eta_mix(c, dc_gwa_table_near[b][c->j][i + 1], dc_gwa_table_near[b][c->j + 1][i + 1], &v1, &d1);
+  hermite(cx - i, v0, d0 * dx, v1, d1 * dx, L, &Lc);
+  *Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
+}
+
+/* deep region: bicubic in (u, eta), u = ln(-x) + eta, whose nodes on row
+   j + 1 are those of row j three places shallower; x < 0 */
+static void deep_interp(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+{
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
+  const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
+  const double cu = DC_GWA_TABLE_U_PER_UNIT * (log(x / DC_GWA_TABLE_X_B) + c->ue * de) - DC_GWA_TABLE_K_MIN;
+  int m = (int)cu;
+  if (m < sh) m = sh;
+  if (m > DC_GWA_TABLE_NDEEP - 2) m = DC_GWA_TABLE_NDEEP - 2;
+  double v0, d0, v1, d1, Lc;
+  eta_mix(c, dc_gwa_table_deep[b][c->j][m], dc_gwa_table_deep[b][c->j + 1][m - sh], &v0, &d0);
+  eta_mix(c, dc_gwa_table_deep[b][c->j][m + 1], dc_gwa_table_deep[b][c->j + 1][m + 1 - sh], &v1, &d1);
+  hermite(cu - m, v0, d0 * du, v1, d1 * du, L, &Lc);
+  *Lx = Lc * DC_GWA_TABLE_U_PER_UNIT / x;
+}
+
+/* L = ln(-T) and dL/dx on the table's x range */
+static inline void table_L(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+{
+  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, c, L, Lx); return; }
+  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, c, L, Lx); return; }
+  double Ln, Lnx, Ld, Ldx, dw;
+  const double bl = DC_GWA_TABLE_BLEND_HI - DC_GWA_TABLE_BLEND_LO;
+  const double w = step_down((x - DC_GWA_TABLE_BLEND_LO) / bl, &dw);   /* weight of deep */
+  near_interp(b, x, c, &Ln, &Lnx);
+  deep_interp(b, x, c, &Ld, &Ldx);
+  *L = Ln + w * (Ld - Ln);
+  *Lx = Lnx + w * (Ldx - Lnx) + dw / bl * (Ld - Ln);
 }
 
 /* one summit's fbar - fbar_Hertz at reduced overlap d = delta/delta_c > 0
@@ -110,91 +204,95 @@ static void summit_g(double d, double *g, double *gd)
   *gd = (M_PI / 3.0) * Tp * (-1.5 * eps / A) / (4.0 * A - 0.5 * M_PI / y);
 }
 
-/* G and dG/dx, unchecked; eta clamped; tau_ub = -ub (unloading shift in d) */
-static void reduced(int b, double x, double eta, double *G, double *Gx)
+/* G and dG/dx beyond the table (x > X_HI, x < x_end), unchecked */
+static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *G, double *Gx)
 {
-  const double emax = DC_GWA_TABLE_ETA_LO + (double)(DC_GWA_TABLE_NETA - 1) / DC_GWA_TABLE_ETA_PER_UNIT;
-  if (eta < DC_GWA_TABLE_ETA_LO) eta = DC_GWA_TABLE_ETA_LO;
-  if (eta > emax) eta = emax;
-  double ue = (eta - DC_GWA_TABLE_ETA_LO) * DC_GWA_TABLE_ETA_PER_UNIT;
-  int j = (int)ue;
-  if (j > DC_GWA_TABLE_NETA - 2) j = DC_GWA_TABLE_NETA - 2;
-  ue -= j;
-  const double x_end = dc_gwa_table_x_node(0);
+  double L, Lx;
   if (x > DC_GWA_TABLE_X_HI) {
-    double L, Lc;
-    eta_interp(b, DC_GWA_TABLE_NX - 1, j, ue, 0, &L, &Lc);
-    const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
-    const double Lv = L + Lx * (x - DC_GWA_TABLE_X_HI);
-    *G = -exp(Lv);
+    /* L continued linearly (C1); the kink term vanishes here */
+    near_interp(b, DC_GWA_TABLE_X_HI, c, &L, &Lx);
+    *G = -exp(L + Lx * (x - DC_GWA_TABLE_X_HI));
     *Gx = *G * Lx;
     return;
   }
-  if (x < x_end) {
-    /* every summit pressed: one summit at the mean compression; where
-       that overflows, the limit g -> -pi/8 (the correction -> 0) */
-    const double ub = DC_GWA_UB;
-    const double tau = exp(eta), shift = b == DC_GW_UNLOADING ? ub : 0.0, d = -tau * x + shift;
-    if (!(d <= DBL_MAX)) { *G = -M_PI / 8.0; *Gx = 0.0; return; }
-    double L, Lc, g, gd, g0, gd0;
-    eta_interp(b, 0, j, ue, 1, &L, &Lc);
-    summit_g(-tau * x_end + shift, &g0, &gd0);
-    summit_g(d, &g, &gd);
-    const double q = x_end / x, q2 = q * q, corr = (-exp(L) - g0) * q2 * sqrt(sqrt(q2 * q2 * q2 / q));
-    *G = g + corr;
-    *Gx = -tau * gd - 2.75 * corr / x;
+  /* every summit pressed: one summit at the mean compression */
+  const double x_end = dc_gwa_table_x_deep(DC_GWA_TABLE_K_END);
+  const double tau = exp(c->eta), shift = b == DC_GW_UNLOADING ? DC_GWA_UB : 0.0;
+  double g, gd, g0, gd0, C = 0.0, Cx;
+  deep_interp(b, x_end, c, &L, &Lx);
+  if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x_end, c->eta, &C, &Cx);
+  const double d = -tau * x + shift;
+  if (!(d <= DBL_MAX)) { *G = -M_PI / 8.0; *Gx = 0.0; return; }   /* beyond the doubles: the limit g = -pi/8 */
+  summit_g(-tau * x_end + shift, &g0, &gd0);
+  summit_g(d, &g, &gd);
+  const double q = x_end / x, q2 = q * q, corr = (-exp(L) - C - g0) * q2 * sqrt(sqrt(q2 * q2 * q2 / q));
+  *G = g + corr;
+  *Gx = -tau * gd - 2.75 * corr / x;
+}
+
+/* G and dG/dx, unchecked, in the eta cell c */
+static inline void reduced(int b, double x, const dc_gwa_table_eta *c, double *G, double *Gx)
+{
+  if (x > DC_GWA_TABLE_X_HI || x < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) {
+    reduced_beyond(b, x, c, G, Gx);
     return;
   }
-  int i;
-  double t;
-  if (x < DC_GWA_TABLE_X_LO) {
-    const double c = DC_GWA_TABLE_NDEEP - DC_GWA_TABLE_PER_OCTAVE * log2(x / DC_GWA_TABLE_X_LO);
-    i = (int)c;
-    if (i < 0) i = 0;
-    if (i > DC_GWA_TABLE_NDEEP - 1) i = DC_GWA_TABLE_NDEEP - 1;
-    t = c - i;
-  } else {
-    const double c = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
-    i = (int)c;
-    if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
-    t = c - i;
-    i += DC_GWA_TABLE_NDEEP;
-  }
-  double L0, Lc0, L1, Lc1, L, Lc;
-  const int deep = x < DC_GWA_TABLE_X_LO;
-  eta_interp(b, i, j, ue, deep, &L0, &Lc0);
-  eta_interp(b, i + 1, j, ue, deep, &L1, &Lc1);
-  hermite(t, L0, Lc0, L1, Lc1, &L, &Lc);
-  const double dxdc = x < DC_GWA_TABLE_X_LO ? -x * M_LN2 / DC_GWA_TABLE_PER_OCTAVE : 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  double L, Lx;
+  table_L(b, x, c, &L, &Lx);
   *G = -exp(L);
-  *Gx = *G * Lc / dxdc;
+  *Gx = *G * Lx;
+  if (b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI) {
+    double C, Cx;
+    dc_gwa_table_kink(x, c->eta, &C, &Cx);
+    *G -= C;
+    *Gx -= Cx;
+  }
 }
 
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
 {
   if (!(isfinite(x) && isfinite(eta) && (branch == DC_GW_LOADING || branch == DC_GW_UNLOADING))) return DC_EDOM;
+  dc_gwa_table_eta c;
+  eta_cell(eta, &c);
   double g, gx;
-  reduced(branch, x, eta, &g, &gx);
+  reduced(branch, x, &c, &g, &gx);
   if (!(isfinite(g) && isfinite(gx))) return DC_ERANGE;
   *G = g;
   *dGdx = gx;
   return DC_OK;
 }
 
-/* branch force, unchecked inputs; 0 on success */
-static int branch_force(const dc_gwa_table_pair *p, double lnR, double R, int b, double delta,
+int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_radius *r)
+{
+  if (!(R > 0.0 && isfinite(R))) return DC_EDOM;
+  dc_gwa_table_radius q = {0};
+  q.R = R;
+  if (p->w > 0.0) {
+    const double r3 = cbrt(R);
+    q.Fs = p->F_coef * R;
+    q.db = -p->ub * p->dc_coef * r3;
+    q.D = q.db * p->inv_sigma;
+    q.reach = q.db + DC_GWA_TABLE_X_HI * p->sigma;
+    eta_cell(p->ln_sigma_dc - log(R) / 3.0, &q.cell);
+    if (!(isfinite(q.Fs) && isfinite(q.cell.eta))) return DC_ERANGE;
+  }
+  *r = q;
+  return DC_OK;
+}
+
+/* branch force at overlap delta, unchecked inputs; 0 on success */
+static inline int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, int b, double delta,
                         double *F, double *kn)
 {
-  const double eta = p->ln_sigma_dc - lnR / 3.0;
-  const double h = -delta * p->inv_sigma;
-  double x = h;
-  /* h - D = -(delta + |delta_break|)/sigma, summed first: h and D may both overflow */
-  if (b == DC_GW_UNLOADING) x = -(delta - p->ub * p->dc_coef * cbrt(R)) * p->inv_sigma;
+  double x = -delta * p->inv_sigma;   /* h */
+  if (b == DC_GW_UNLOADING) {
+    x -= r->D;
+    if (isnan(x)) x = -(delta + r->D * p->sigma) * p->inv_sigma;   /* h and D both overflowed: summed first */
+  }
   double G, Gx;
-  reduced(b, x, eta, &G, &Gx);
-  const double Fs = p->F_coef * R;
-  *F = Fs * G;
-  *kn = -Fs * Gx * p->inv_sigma;
+  reduced(b, x, &r->cell, &G, &Gx);
+  *F = r->Fs * G;
+  *kn = -r->Fs * Gx * p->inv_sigma;
   return isfinite(*F) && isfinite(*kn) ? DC_OK : DC_ERANGE;
 }
 
@@ -203,9 +301,11 @@ int dc_gwa_table_force(const dc_gwa_table_pair *p, double R, int branch, double 
   if (!(R > 0.0 && isfinite(R) && isfinite(delta) && (branch == DC_GW_LOADING || branch == DC_GW_UNLOADING)))
     return DC_EDOM;
   if (p->w == 0.0) { *F = 0.0; *kn = 0.0; return DC_OK; }
+  dc_gwa_table_radius r;
+  const int st = dc_gwa_table_radius_init(p, R, &r);
+  if (st != DC_OK) return st;
   double f, k;
-  const int r = branch_force(p, log(R), R, branch, delta, &f, &k);
-  if (r != DC_OK) return r;
+  if (branch_force(p, &r, branch, delta, &f, &k) != DC_OK) return DC_ERANGE;
   *F = f;
   *kn = k;
   return DC_OK;
@@ -216,27 +316,27 @@ double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R)
   return -p->ub * p->dc_coef * cbrt(R) + DC_GWA_TABLE_X_HI * p->sigma;
 }
 
-int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)
+int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double delta, double *hist,
+                             dc_gwa_table_out *o)
 {
-  if (!(R > 0.0 && isfinite(R) && isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
+  if (!(isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
   if (p->w == 0.0) { o->F = 0.0; o->kn = 0.0; o->weight = 0.0; return DC_OK; }
   const int touched = hist[0] != 0.0;
   double dmax = touched ? hist[1] : delta;
   if (delta > dmax) dmax = delta;
-  const double lnR = log(R);
-  const double db = -p->ub * p->dc_coef * exp(lnR / 3.0);   /* |delta_break| */
+  const double db = r->db;   /* |delta_break| */
   const double xi = (dmax - delta) / db;
   double F, kn, wgt;
   if (!(xi > 0.0)) {
-    if (branch_force(p, lnR, R, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 0.0;
   } else if (xi >= 1.0) {
-    if (branch_force(p, lnR, R, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 1.0;
   } else {
     double FL, kL, FU, kU;
-    if (branch_force(p, lnR, R, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
-    if (branch_force(p, lnR, R, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
     wgt = xi * xi * (3.0 - 2.0 * xi);
     const double dw = -6.0 * xi * (1.0 - xi) / db;   /* dw/d delta */
     F = FL + wgt * (FU - FL);
@@ -244,9 +344,18 @@ int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double
     if (!(isfinite(F) && isfinite(kn))) return DC_ERANGE;
   }
   /* the lowest attached summit beyond x = X_HI: every summit separated */
-  const double x_u = -(delta + db) * p->inv_sigma;   /* h - D */
+  const double x_u = -delta * p->inv_sigma - r->D;   /* h - D */
   if (wgt == 1.0 && x_u > DC_GWA_TABLE_X_HI) { hist[0] = 0.0; hist[1] = 0.0; }
   else { hist[0] = 1.0; hist[1] = dmax; }
   o->F = F; o->kn = kn; o->weight = wgt;
   return DC_OK;
+}
+
+int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)
+{
+  if (!(R > 0.0 && isfinite(R) && isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
+  dc_gwa_table_radius r;
+  const int st = dc_gwa_table_radius_init(p, R, &r);
+  if (st != DC_OK) return st;
+  return dc_gwa_table_step_radius(p, &r, delta, hist, o);
 }

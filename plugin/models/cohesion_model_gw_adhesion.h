@@ -74,6 +74,7 @@ public:
     double **Y = registry.getMatrixProperty("Yeff", caller)->data;
     ntypes = registry.max_type();
     pairs.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_pair());
+    radii.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_radius());
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
         const double sigma = dc_gw_roughness_combine(s[i], s[j]);
@@ -99,8 +100,7 @@ public:
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-    double vn;
-    const double delta = closeSphereContact(scdata, vn);
+    const double delta = closeSphereOverlap(scdata);
     if (adhesion(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
   }
 
@@ -112,24 +112,37 @@ private:
   /* Applies the adhesive force at overlap delta; false when none acts. */
   bool adhesion(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
   {
-    const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
+    const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
+    const dc_gwa_table_pair &p = pairs[k];
     if (p.sigma == 0.0) return false;   /* a smooth pair */
     const double R = sphereEffectiveRadius(sidata);
+    /* the set-up for R, kept per type pair while R repeats */
+    dc_gwa_table_radius &rad = radii[k];
+    if (rad.R != R) {
+      const int st = dc_gwa_table_radius_init(&p, R, &rad);
+      if (st != DC_OK) {
+        char msg[256];
+        snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
+        error->one(FLERR, msg);
+      }
+    }
     double *h = &sidata.contact_history[history_offset];
     double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
     if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
       memcpy(scratch, h, sizeof scratch);
       h = scratch;
     }
-    const double reach = dc_gwa_table_reach(&p, R), r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
-    if (h[0] != 0.0 && neighbor->contactDistanceFactor * r0 < r0 + reach) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
-               "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
-      error->one(FLERR, msg);
+    if (h[0] != 0.0) {
+      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum, reach = rad.reach;
+      if (neighbor->contactDistanceFactor * r0 < r0 + reach) {
+        char msg[256];
+        snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
+                 "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
+        error->one(FLERR, msg);
+      }
     }
     dc_gwa_table_out o;
-    const int st = dc_gwa_table_step(&p, R, delta, h, &o);
+    const int st = dc_gwa_table_step_radius(&p, &rad, delta, h, &o);
     if (st != DC_OK) {
       char msg[256];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
@@ -159,6 +172,7 @@ private:
 
   int history_offset, ntypes;
   std::vector<dc_gwa_table_pair> pairs;
+  std::vector<dc_gwa_table_radius> radii;
 };
 
 }

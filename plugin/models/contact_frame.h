@@ -32,20 +32,23 @@ inline double stockEffectiveRadius(const SurfacesIntersectData &sidata, bool sup
 }
 
 /* For a sphere contact handed to surfacesClose (not touching): the overlap
-   (negative) and normal velocity; fills en and meff for pairs (walls have
-   set them). Both LIGGGHTS callers pass a SurfacesIntersectData. */
+   (negative); fills en for pairs (walls have set it). Both LIGGGHTS
+   callers pass a SurfacesIntersectData. */
+inline double closeSphereOverlap(SurfacesCloseData &scdata)
+{
+  SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+  if (sidata.is_wall) return sidata.deltan;
+  const double r = sqrt(sidata.rsq);
+  for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
+  return sidata.radsum - r;
+}
+
+/* The same, with the normal velocity; fills meff too for pairs. */
 inline double closeSphereContact(SurfacesCloseData &scdata, double &vn)
 {
   SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-  double delta;
-  if (sidata.is_wall) {
-    delta = sidata.deltan;
-  } else {
-    const double r = sqrt(sidata.rsq);
-    delta = sidata.radsum - r;
-    for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
-    sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
-  }
+  const double delta = closeSphereOverlap(scdata);
+  if (!sidata.is_wall) sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
   const double *vi = sidata.v_i, *vj = sidata.v_j;
   vn = (vi[0] - vj[0]) * sidata.en[0] + (vi[1] - vj[1]) * sidata.en[1] + (vi[2] - vj[2]) * sidata.en[2];
   return delta;

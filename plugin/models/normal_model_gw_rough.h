@@ -105,6 +105,7 @@ public:
     ntypes = registry.max_type();
     dc_param_error err;
     if (gwElliptic) {
+      sphereGeom.assign((ntypes + 1) * (ntypes + 1), dc_hertz_geom());
       registry.registerProperty("asperityCount", &createAsperityCount, caller);
       registry.connect("asperityCount", n_asp, caller);
       for (int i = 1; i <= ntypes; i++)
@@ -190,7 +191,10 @@ private:
       hertzGeometry(R_major, R_minor, g);
       reff = g.Rc;
     } else if (gwElliptic && sigma != 0.0) {
-      hertzGeometry(reff, reff, g);
+      /* the circle's geometry, kept per type pair while reff repeats */
+      dc_hertz_geom &c = sphereGeom[itype * (ntypes + 1) + jtype];
+      if (c.R_major != reff) hertzGeometry(reff, reff, c);
+      g = c;
     }
     if (delta > 0.0)   /* the smooth bodies' Hertz semi-axis: a^2 = 2 R_major delta D / K, spheres R delta */
       checkHertzRange(sidata, sq ? 2.0 * g.R_major * delta * g.D / g.K : reff * delta, sq ? g.R_minor : reff);
@@ -256,6 +260,7 @@ private:
   int ntypes;
   int sphereLaw;   /* DC_GW_SPHERE_* */
   std::vector<dc_gw_sphere_pair> laws;
+  std::vector<dc_hertz_geom> sphereGeom;   /* gwElliptic on, spheres: per type pair */
   std::vector<dc_gw_plastic_params> plastic;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Whole-run (loop) time of the same scene with stock `hertz` and with
-# `hertz_elliptic`, for spheres and superquadrics, `gw_rough` and
-# `jkr_elliptic` on the sphere packing, the superquadric packing on 1
-# and 2 MPI ranks, and a rolling scene with and without `rolling_friction
-# kalker`. All runs in one invocation; the configurations run
+# `hertz_elliptic`, for spheres and superquadrics, `gw_rough` (with and
+# without cohesion `gw_adhesion`) and `jkr_elliptic` on the sphere packing,
+# the superquadric packing on 1 and 2 MPI ranks, and a rolling scene with
+# and without `rolling_friction kalker`. All runs in one invocation; the
+# configurations run
 # round-robin REPS times (so that a slow spell of the machine hits all of
 # them alike) and the fastest run of each is kept. Prints figures, asserts
 # nothing. Usage: bash tests/bench/bench_scenes.sh [REPS]
@@ -27,8 +28,17 @@ roll="$root/tests/bench/in.rolling_scene"
 configs=(
   "sh|$sph|hertz|10000|1|"
   "se|$sph|hertz_elliptic|10000|1|"
+  # gw_rough's tabulated law reaches 6 sigma before touch (sigma = 2^1/2
+  # 1.5e-5 m per pair and sphere-wall): contact distance 1.085 at least
   "sr|$sph|gw_rough|10000|1|-var cdf 1.09"
   "sj|$sph|jkr_elliptic|10000|1|-var cdf 1.02"
+  # rough adhesion: gw_rough gwElliptic on with cohesion gw_adhesion (w =
+  # 0.05 J/m^2; attached summits pull up to 8 sigma + |delta_break| apart:
+  # contact distance 1.114 at least), gw_rough gwElliptic on alone and the
+  # default gw_rough at that contact distance
+  "sra|$sph|gw_rough|10000|1|-var cdf 1.12 -var coh 1"
+  "sre|$sph|gw_rough|10000|1|-var cdf 1.12 -var gwe 1"
+  "sr2|$sph|gw_rough|10000|1|-var cdf 1.12"
   # the laws' own cost: the same contact distance without the rough law,
   # and each law on the Hertz trajectory (w, sigma practically 0)
   "sh5|$sph|hertz|10000|1|-var cdf 1.09"
@@ -91,6 +101,9 @@ row(lambda sh, se: "2888 spheres settling, 10000 steps, 1 rank          %9.3f s 
 row(lambda qh, qe: "324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh), "qh", "qe")
 row(lambda sr, sh: "2888 spheres: gw_rough (tabulated GW law, sigma = 0.01 r) %.3f s = %.4f x stock hertz" % (sr, sr / sh), "sr", "sh")
 row(lambda sh5, sr: "    same contact distance (1.09): stock hertz %.3f s; gw_rough = %.4f x" % (sh5, sr / sh5), "sh5", "sr")
+row(lambda sra, sr, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
+    "%.3f s = %.4f x gw_rough (default law, 1.09), %.4f x gw_rough (default law, 1.12), %.4f x gw_rough gwElliptic on (1.12)"
+    % (sra, sra / sr, sra / sr2, sra / sre), "sra", "sr", "sr2", "sre")
 row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
     "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1), "sh1", "sr0")
 row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")

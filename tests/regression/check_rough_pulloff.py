@@ -7,7 +7,9 @@
   -3 sigma, where gw_rough cuts its elastic force): on approach the loading branch,
   within 1e-5 relative where |F| > 1e-3 of the largest force; on retraction,
   once past the blend band next to the deepest overlap, the unloading
-  branch within 1e-3 (the table's stated unloading accuracy is 3.8e-4);
+  branch within 5e-4 (relative to the larger of |F| and 1e-3 of the largest
+  force: where the total force crosses zero this is ~1e-6 of the adhesive
+  part; the table's stated unloading accuracy is 2.5e-5);
 - hysteresis: the pull-off force (the most negative force on retraction)
   exceeds the largest pull on approach, and equals the exact unloading
   branch's minimum within 1e-3;
@@ -71,7 +73,7 @@ def worst(ks, col):
 
 el, eu = worst(approach, 1), worst(retract, 2)
 c.true(len(approach) > 20 and el < 1e-5, "approach (%d rows): force vs the exact loading branch, worst %.3g (tol 1e-5)" % (len(approach), el))
-c.true(len(retract) > 20 and eu < 1e-3, "retraction (%d rows): force vs the exact unloading branch, worst %.3g (tol 1e-3)" % (len(retract), eu))
+c.true(len(retract) > 20 and eu < 5e-4, "retraction (%d rows): force vs the exact unloading branch, worst %.3g (tol 5e-4)" % (len(retract), eu))
 pull_in = min(r[2] for r in rows[:k_turn])
 pull_off = min(r[2] for r in rows[k_turn:])
 grid = exact(-6 * sig, 0.5e-6, 2001)

@@ -2850,14 +2850,16 @@ static double gwa_bound(const dc_gwa_table_pair *p, double R)
 
 static void fuzz_gwa_table(void)
 {
-  fz_fn *f = fz_new("dc_gwa_table_x_node");
+  fz_fn *f = fz_new("dc_gwa_table_x_near, _x_deep");
   for (long k = 0; k < N_CALLS; k++) {
-    const int i = UI(DC_GWA_TABLE_NX);
-    const double x = dc_gwa_table_x_node(i), y = i + 1 < DC_GWA_TABLE_NX ? dc_gwa_table_x_node(i + 1) : INFINITY;
+    const int i = UI(DC_GWA_TABLE_NNEAR), kd = DC_GWA_TABLE_K_MIN + UI(DC_GWA_TABLE_NDEEP - 1);
+    const double x = dc_gwa_table_x_near(i), y = dc_gwa_table_x_near(i + 1);
+    const double u = dc_gwa_table_x_deep(kd + 1), v = dc_gwa_table_x_deep(kd);
     f->calls++;
-    FZ_EXPECT(f, isfinite(x) && x < y && (i != 0 || x == -256.0) && (i != DC_GWA_TABLE_NDEEP || x == DC_GWA_TABLE_X_LO) &&
-                 (i != DC_GWA_TABLE_NX - 1 || x == DC_GWA_TABLE_X_HI),
-              "not increasing from -256 over X_LO to X_HI", "node %d: %.17g, next %.17g", i, x, y);
+    FZ_EXPECT(f, isfinite(x) && x < y && (i != 0 || x == DC_GWA_TABLE_X_LO) &&
+                 (i + 1 != DC_GWA_TABLE_NNEAR || y == DC_GWA_TABLE_X_HI) && isfinite(u) && u < v && v < 0.0,
+              "nodes not increasing from X_LO to X_HI, or deep nodes not decreasing below 0",
+              "near node %d: %.17g, next %.17g; deep node %d: %.17g, next %.17g", i, x, y, kd, v, u);
   }
   fz_done(f);
 
@@ -2975,10 +2977,21 @@ static void fuzz_gwa_table(void)
     const int dom = !bad && R > 0.0 && (hist[0] == 0.0 || hist[0] == 1.0);
     dc_gwa_table_out o;
     SENTINEL(o);
+    /* the same step with the radius set up once (the DEM path) */
+    dc_gwa_table_radius rr;
+    dc_gwa_table_out o2;
+    double hist2[2] = {h0[0], h0[1]};
+    SENTINEL(o2);
+    const int sr = dc_gwa_table_radius_init(p, R, &rr);
+    const int st2 = sr == DC_OK ? dc_gwa_table_step_radius(p, &rr, d, hist2, &o2) : sr;
     const int st = dc_gwa_table_step(p, R, d, hist, &o);
     FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(hist, h0, sizeof hist),
              FIN(o) && o.F <= 0.0 && o.weight >= 0.0 && o.weight <= 1.0 && fin(hist, 2),
              GWA_FMT " delta %.17g history %.17g %.17g", GWA_ARGS(p, R), d, h0[0], h0[1]);
+    FZ_EXPECT(f, sr != DC_OK ? st != DC_OK || !dom
+                             : st2 == st && (st != DC_OK || (!memcmp(&o2, &o, sizeof o) && !memcmp(hist2, hist, sizeof hist))),
+              "dc_gwa_table_radius_init + _step_radius differ from dc_gwa_table_step",
+              GWA_FMT " delta %.17g: status %d vs %d", GWA_ARGS(p, R), d, st2, st);
     if (st == DC_OK && dom) {
       if (p->w == 0.0)
         FZ_EXPECT(f, o.F == 0.0 && o.kn == 0.0 && o.weight == 0.0 && !memcmp(hist, h0, sizeof hist),

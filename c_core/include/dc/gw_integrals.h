@@ -45,7 +45,10 @@
      F_n = sum_j C(n,2j) (2j-1)!! |h|^{n-2j} (omitted tail ~ phi(h) < 1e-22);
      for h >= 20 the asymptotic series G_n = sum_k (-1/2)^k/k!
      Gamma(n+2k+1) h^-(n+2k+1). Relative error ~1e-16 (tested < 8e-16 over
-     the committed table), no allocation, no GSL.
+     the committed table), no allocation, no GSL. The Clenshaw recurrences
+     run on the processor's FMA instructions where it has them (GCC, x86-64:
+     a clone chosen at load time; the same bits as the library's fma), the
+     four orders of dc_gw_F_all side by side: ~40 ns per call, ~330 before.
    - dc_gw_F_closed: the Bessel closed forms above via GSL's fractional-
      order K_nu and I_nu (GSL is used because C has no fractional-order
      Bessel functions). Slower, and F_1 and F_3/2 lose ~2 log10(h) digits for

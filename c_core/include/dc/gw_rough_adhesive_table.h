@@ -24,20 +24,42 @@
 
    Table (c_core/src/gw_rough_adhesive_table_data.h, written by
    tests/reference/gen_gw_rough_adhesive_table.c from the c_core law):
-   L = ln(-G) at nodes in x and eta = ln tau, with dL/dx, dL/d eta and
-   d2L/dx d eta; bicubic Hermite in (cell coordinate of x, eta), so L, and
-   the force, is C1 in delta and in tau. x = h (loading) or x = h - D
-   (unloading; D = -delta_break/sigma, x is then the height s0 of the
-   lowest attached summit). x nodes: 1/16 on [-8, 8]; below -8, 8 per octave
-   in log2(-x) to -256. eta nodes: 1/4 on [-4.5, 8] (theta 1.1e-3 to
-   1.5e5; above, the law's F - F_gw loses digits to the elastic part).
+   L = ln(-T) at nodes with its first and cross derivatives, bicubic
+   Hermite, so L, and the force, is C1 in delta and in tau. T = G for
+   loading; for unloading see the kink term below. x = h (loading) or
+   x = h - D (unloading; D = -delta_break/sigma, x is then the height s0 of
+   the lowest attached summit). eta = ln tau rows 1/4 apart on [-4.5, 8]
+   (theta 1.1e-3 to 1.5e5; above, the law's F - F_gw loses digits to the
+   elastic part). Two regions in x, blended by a quintic step on
+   [-6.5, -4.5]:
+   - near, x in [-6.5, 8]: nodes 1/16 apart in x, rows at fixed x (the
+     Gaussian of the lowest attached summits, whose features stay at fixed x);
+   - deep, x in [-255, -4.5]: nodes 12 per unit of u = ln(-x) + eta =
+     ln(-tau x), rows at fixed u. The summits' mean compression is
+     -tau x (+ delta_break/delta_c unloading), so G varies with eta
+     mostly through u; rows at fixed x, as the first version had them,
+     resolve that variation only to ~5e-5 at small tau. Row j + 1 holds the
+     node of the same u three places shallower.
+   Unloading, the kink term: G's Hertz part (the closed form subtracted)
+   is c_H tau^3/2 F_3/2(h), c_H = 4/(3 pi 2^3/2), whose summits' d^3/2
+   kink sits at h ~ 0, i.e. on x = -D, a line across the grid (at small
+   tau one eta row moves it by D/4 in x). Interpolated across, it gave
+   errors up to 4.2e-3 at tau 0.01 to 0.5 (the first version; its stated
+   3.8e-4 came from too sparse a sample). So the table holds
+   T = G + C, C = c_H w(x) tau^3/2 [F_3/2(h) - s^3/2 F_3/2(h/s)],
+   s^2 = 1 + K(eta) (B/tau)^2 (dc_gwa_table_kink), and C is subtracted
+   again, exactly, after the interpolation: T keeps the kink smoothed over
+   a width (tau^2 + K B^2)^1/2 in the compression, B = 1, which the grid
+   resolves; F_3/2 is convex, so s^3/2 F_3/2(h/s) >= F_3/2(h) and
+   T <= G < 0. w falls from 1 to 0 over x in [-2, 1] (C stays out of G's
+   Gaussian tail) and K over eta in [0, 3] (tau > 20: no term, no cost).
    Beyond the table:
    - x > 8: L continued linearly (C1; G < 1e-15 there);
-   - x < -256 (every summit pressed, the Gaussian 1/|x| of the mean
+   - x < x_end = -255.1 (every summit pressed, the Gaussian 1/|x| of the mean
      compression d = delta/delta_c): G = g(d) + (G_end - g(d_end))
      (x_end/x)^11/4, g = fbar - fbar_Hertz of one summit (exact, from the
      JKR contact radius; the correction is the tau^2 g''/2 term's decay),
-     matched in value at x_end = -256 (the slope to ~1e-5);
+     matched in value at x_end (the slope to ~1e-7);
    - eta outside its range is clamped (theta > 1.5e5: the adhesive part is
      below ~1e-5 of the elastic one; theta < 1.1e-3: not covered, the
      error is not stated there).
@@ -52,12 +74,17 @@
    between the branches). The history resets (next step loads afresh) when
    the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R).
    Work of adhesion 0: force and stiffness exactly 0.
-   Error against the exact law (tests/unit/test_gw_rough_adhesive_table.c,
-   1500 random points off the nodes, theta in the table's range): relative,
-   where |F| >= 1e-6 n_asp 8 w R, loading 1.5e-6 (kn 3.6e-7), unloading
-   3.8e-4 (kn 6.7e-4; worst at small tau, x in -26..-6, not yet traced);
-   absolute below 1.9e-12 n_asp 8 w R. Pull-off force within 4.7e-6.
-   Cost: 73-80 ns per dc_gwa_table_step (exact law ~9.5 us). */
+   Error against the exact law (tests/unit/test_gw_rough_adhesive_table.c:
+   every cell of the table, 4 points per eta cell, 60 per x band, and 1500
+   random points in physical units): relative, where |F| >= 1e-6 n_asp 8 w R,
+   loading 3.1e-7 in the table, 1.5e-6 beyond it (x < x_end), dF/d delta
+   6.7e-7; unloading 2.5e-5, dF/d delta 2.9e-5 (worst at tau 0.2 to 1, x in
+   -5..-2, where the kink crosses the near region; elsewhere mostly below
+   5e-6); absolute below 1.9e-12 n_asp 8 w R. Pull-off force within 4.8e-6.
+   Cost (the unit test, one core): 31 ns per dc_gwa_table_step_radius at
+   tau > 20, 62 ns at tau ~ 5 (the kink term on unloading: two
+   dc_gw_F_all); setting the radius up at each call (dc_gwa_table_step)
+   adds ~70 ns (cbrt, log). Exact law ~9.5 us. */
 #ifndef DC_GW_ROUGH_ADHESIVE_TABLE_H
 #define DC_GW_ROUGH_ADHESIVE_TABLE_H
 
@@ -68,25 +95,51 @@
 extern "C" {
 #endif
 
-#define DC_GWA_TABLE_X_LO (-8.0)
+/* near region: x in [X_LO, X_HI], X_PER_UNIT nodes per unit */
+#define DC_GWA_TABLE_X_LO (-6.5)
 #define DC_GWA_TABLE_X_HI 8.0
 #define DC_GWA_TABLE_X_PER_UNIT 16
-#define DC_GWA_TABLE_NNEAR 256          /* cells on [X_LO, X_HI] */
-#define DC_GWA_TABLE_PER_OCTAVE 8
-#define DC_GWA_TABLE_OCTAVES 5
-#define DC_GWA_TABLE_NDEEP (DC_GWA_TABLE_PER_OCTAVE * DC_GWA_TABLE_OCTAVES)
-#define DC_GWA_TABLE_NX (DC_GWA_TABLE_NDEEP + DC_GWA_TABLE_NNEAR + 1)
+#define DC_GWA_TABLE_NNEAR 232          /* cells on [X_LO, X_HI] */
+/* eta rows: ETA_LO + j / ETA_PER_UNIT, j < NETA (eta_hi = 8) */
 #define DC_GWA_TABLE_ETA_LO (-4.5)
 #define DC_GWA_TABLE_ETA_PER_UNIT 4
-#define DC_GWA_TABLE_NETA 51            /* eta_hi = 8 */
+#define DC_GWA_TABLE_NETA 51
+/* deep region: node k at x = X_B e^(k / U_PER_UNIT), K_MIN <= k <= K_MAX,
+   stored at index k - K_MIN; U_PER_UNIT / ETA_PER_UNIT = 3 nodes per row
+   (the shear of u = ln(-x) + eta); the table ends at k = K_END */
+#define DC_GWA_TABLE_X_B (-6.0)
+#define DC_GWA_TABLE_U_PER_UNIT 12
+#define DC_GWA_TABLE_K_MIN (-7)
+#define DC_GWA_TABLE_K_END 45
+#define DC_GWA_TABLE_K_MAX 48
+#define DC_GWA_TABLE_NDEEP (DC_GWA_TABLE_K_MAX - DC_GWA_TABLE_K_MIN + 1)
+/* near and deep regions are blended on [BLEND_LO, BLEND_HI] */
+#define DC_GWA_TABLE_BLEND_LO (-6.5)
+#define DC_GWA_TABLE_BLEND_HI (-4.5)
 
-/* x at node i in [0, DC_GWA_TABLE_NX) (increasing) */
-static inline double dc_gwa_table_x_node(int i)
+/* x at near node i in [0, NNEAR] and at deep node k in [K_MIN, K_MAX] */
+static inline double dc_gwa_table_x_near(int i)
 {
-  if (i < DC_GWA_TABLE_NDEEP)
-    return DC_GWA_TABLE_X_LO * exp2((double)(DC_GWA_TABLE_NDEEP - i) / DC_GWA_TABLE_PER_OCTAVE);
-  return DC_GWA_TABLE_X_LO + (double)(i - DC_GWA_TABLE_NDEEP) / DC_GWA_TABLE_X_PER_UNIT;
+  return DC_GWA_TABLE_X_LO + (double)i / DC_GWA_TABLE_X_PER_UNIT;
 }
+static inline double dc_gwa_table_x_deep(int k)
+{
+  return DC_GWA_TABLE_X_B * exp((double)k / DC_GWA_TABLE_U_PER_UNIT);
+}
+
+/* The unloading branch's smoothing of the summits' Hertz kink (header
+   comment): C(x, eta) = c_H w(x) tau^3/2 [F_3/2(h) - s^3/2 F_3/2(h/s)],
+   s^2 = 1 + K(eta) (B/tau)^2, c_H = 4/(3 pi 2^3/2); w and K quintic steps
+   from 1 to 0 over [W_LO, W_HI] in x and [K_LO, K_HI] in eta. */
+#define DC_GWA_KINK_B 1.0
+#define DC_GWA_KINK_W_LO (-2.0)
+#define DC_GWA_KINK_W_HI 1.0
+#define DC_GWA_KINK_K_LO 0.0
+#define DC_GWA_KINK_K_HI 3.0
+
+/* C and dC/dx at (x, eta) (0 where K or w vanish); the generator adds it
+   to the unloading branch's G before taking the logarithm. */
+void dc_gwa_table_kink(double x, double eta, double *C, double *Cx);
 
 /* One material (type) pair: E*, w, sigma, n_asp of dc_gw_rough_adhesive. */
 typedef struct {
@@ -121,6 +174,31 @@ int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dG
 int dc_gwa_table_force(const dc_gwa_table_pair *p, double R, int branch, double delta,
                        double *F, double *kn);
 
+/* The eta cell of the table: eta clamped to the table's range, row j,
+   position ue in it, the cubic Hermite weights at ue (a row's value, its
+   eta slope, the next row's value and slope). */
+typedef struct {
+  int j;
+  double ue, eta;
+  double w[4];
+} dc_gwa_table_eta;
+
+/* What a contact's relative radius R fixes, for dc_gwa_table_step_radius:
+   a caller may keep it while R stays the same (monodisperse spheres, a
+   sphere on walls). */
+typedef struct {
+  double R;            /* [m] */
+  double Fs;           /* n_asp 8 w R [N] */
+  double db;           /* |delta_break| of a summit [m] */
+  double D;            /* db / sigma */
+  double reach;        /* dc_gwa_table_reach [m] */
+  dc_gwa_table_eta cell;   /* eta = ln tau */
+} dc_gwa_table_radius;
+
+/* Set-up per radius R > 0 (else DC_EDOM, *r untouched; DC_ERANGE if a
+   product overflows). w = 0: only r->R is set. */
+int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_radius *r);
+
 /* Per-contact history: gwa_touched, gwa_delta_max (no sign flips). */
 enum { DC_GWA_TABLE_HISTORY_NFIELDS = 2 };
 extern const dc_history_field dc_gwa_table_history[DC_GWA_TABLE_HISTORY_NFIELDS];
@@ -136,6 +214,11 @@ typedef struct {
    dc_gwa_table_force, hist and *o untouched. */
 int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist,
                       dc_gwa_table_out *o);
+
+/* dc_gwa_table_step with the radius set up by dc_gwa_table_radius_init
+   (the same results). */
+int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double delta, double *hist,
+                             dc_gwa_table_out *o);
 
 /* Reach: the separation (-delta) beyond which the force is below
    1e-15 n_asp w R on either branch: (D + 8) sigma. */
