@@ -9,9 +9,10 @@
 #include <string.h>
 
 #include "hertz_geometry_poly.h"
+#include "dc/poly14.h"
 
-#if DC_HG_NROWS != 16 || DC_HG_NLANES != 8
-#error "hertz_geometry_poly.h: row or lane count differs from hg_eval and dc_hertz_geometry below"
+#if DC_HG_NROWS != DC_POLY14_NROWS || DC_HG_NLANES != 8
+#error "hertz_geometry_poly.h: row or lane count differs from dc_poly14 and dc_hertz_geometry below"
 #endif
 
 int dc_hertz_eccentricity_approx(double ratio, double *e2)
@@ -58,24 +59,6 @@ static inline hg_var hg_variables(double r)
   return v;
 }
 
-/* Lanes 0 .. n-1 of piece c at x: y = head + s, s = rest + x P(x), P by
-   Estrin's scheme (the generator's order: the only rounding at full size
-   is the last addition); s is returned too. */
-static inline void hg_eval(const double (*c)[DC_HG_NLANES], double x, int n, double *y, double *s)
-{
-  const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
-  for (int f = 0; f < n; f++) {
-    const double a0 = c[2][f] + c[3][f] * x, a1 = c[4][f] + c[5][f] * x;
-    const double a2 = c[6][f] + c[7][f] * x, a3 = c[8][f] + c[9][f] * x;
-    const double a4 = c[10][f] + c[11][f] * x, a5 = c[12][f] + c[13][f] * x;
-    const double a6 = c[14][f] + c[15][f] * x;
-    const double b0 = a0 + a1 * x2, b1 = a2 + a3 * x2, b2 = a4 + a5 * x2;
-    const double P = (b0 + b1 * x4) + (b2 + a6 * x4) * x8;
-    s[f] = c[1][f] + x * P;
-    y[f] = c[0][f] + s[f];
-  }
-}
-
 /* R_major (head + s) for the lane value head + s of R_force/R_major,
    |s| <= 0.22 head, R_major < 1e300: R_major split in halves of 26 bits
    (Veltkamp) makes both products with the 26-bit head exact, so the
@@ -111,7 +94,7 @@ int dc_hertz_eccentricity(double ratio, double *e2, double *m1)
   }
   const hg_var v = hg_variables(ratio);
   double y0, s0;
-  hg_eval(dc_hg_poly[v.p], v.x, 1, &y0, &s0);
+  dc_poly14(&dc_hg_poly[v.p][0][0], DC_HG_NLANES, 1, v.x, &y0, &s0);
   hg_eccentricity(v.p, v.t, ratio, y0, e2, m1);
   return DC_OK;
 }
@@ -147,7 +130,7 @@ int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *out)
   const hg_var v = hg_variables(ratio);
   const double sr = sqrt(ratio);
   double y[DC_HG_NLANES], s[DC_HG_NLANES];
-  hg_eval(dc_hg_poly[v.p], v.x, DC_HG_NLANES, y, s);
+  dc_poly14(&dc_hg_poly[v.p][0][0], DC_HG_NLANES, DC_HG_NLANES, v.x, y, s);
   hg_eccentricity(v.p, v.t, ratio, y[0], &g.e2, &g.m1);
   g.K = y[1] + y[3];   /* B + D */
   g.E = y[2];
