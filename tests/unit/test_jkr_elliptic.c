@@ -51,6 +51,58 @@ static void test_sphere_table(void)
   CHECK(rows == 17);
 }
 
+/* dc_jkr_sphere along the whole stable branch of four materials against
+   jkr_sphere_dense.csv (gen_jkr_sphere_dense.py: mpmath on the JKR
+   relation, from the separation point to dbar = 1e8, 1384 states). The
+   law's own roundings (delta/delta_scale, a few eps) move F and a along
+   the curve, so the errors are measured as |F - F_ref|/(|F_ref| + |delta
+   dF/d delta|) and |a - a_ref|/(a_ref + |delta da/d delta|) (the same
+   condition-number bound as cond_tol, in a form that holds where F
+   crosses 0), and kn relative to (1 + (delta da/d delta / a)^2) (dF/d
+   delta -> -oo at the separation point like (delta - delta_b)^-1/2, so
+   its condition number grows like the square of a's; the previous solver
+   and the table alike reach 322 eps there). Where the condition number is below
+   10 (every state but those near separation or F = 0) the plain relative
+   errors are printed: the target was 1e-12. The inline hot path
+   dc_jkr_sphere_near_hertz gives the same bits wherever it applies. */
+static void test_sphere_dense(void)
+{
+  FILE *f = check_open_reference("jkr_sphere_dense.csv");
+  if (!f) return;
+  double v[8];
+  check_read_row(f, v, 8);   /* column names */
+  int rows = 0, hot = 0, same = 1;
+  double eF = 0, ea = 0, ek = 0, rF = 0, ra = 0;
+  while (check_read_row(f, v, 8) == 8) {
+    const double R = v[0], E = v[1], w = v[2], d = v[3], F = v[4], a = v[5], kn = v[6], dad = v[7];
+    dc_jkr_state s;
+    CHECK(dc_jkr_sphere(R, E, w, d, &s) == DC_OK && s.contact == 1);
+    const double cF = fabs(d * kn), ca = fabs(d * dad);
+    eF = fmax(eF, fabs(s.F - F) / (fabs(F) + cF));
+    ea = fmax(ea, fabs(s.a - a) / (a + ca));
+    ek = fmax(ek, fabs(s.kn / kn - 1.0) / (1.0 + (ca / a) * (ca / a)));
+    if (cF < 10.0 * fabs(F)) rF = fmax(rF, fabs(s.F / F - 1.0));
+    if (ca < 10.0 * a) ra = fmax(ra, fabs(s.a / a - 1.0));
+    double a2, F2;
+    if (dc_jkr_sphere_near_hertz(R, E, w, d, &a2, &F2)) {
+      same &= a2 == s.a && F2 == s.F;
+      hot++;
+    }
+    rows++;
+  }
+  fclose(f);
+  printf("classical JKR vs mpmath (%d states, %d on the inline hot path): F %.2g, a %.2g, kn %.2g (in units of\n"
+         "  the condition bound); where the condition number is below 10: F %.2g, a %.2g relative\n",
+         rows, hot, eF, ea, ek, rF, ra);
+  CHECK(rows == 1384);
+  CHECK(hot > 200);
+  CHECK(same);
+  CHECK(eF <= 8 * EPS);
+  CHECK(ea <= 8 * EPS);
+  CHECK(ek <= 512 * EPS);
+  CHECK(rF <= 1e-14 && ra <= 1e-14);
+}
+
 static void test_sphere_closed_forms(void)
 {
   const double R = 2e-3, E = 1e9, w = 0.05;
@@ -488,6 +540,7 @@ static void test_status(void)
 int main(void)
 {
   test_sphere_table();
+  test_sphere_dense();
   test_sphere_closed_forms();
   test_extrema_table();
   test_force_table();
