@@ -17,7 +17,8 @@
    -oo). Timing loops: a load-unload sweep over the stable branch from the
    separation point to delta = 50 |delta_break| in 10^4 steps (warm: the hint
    carried from step to step, as in a DEM run; cold: the same overlaps with
-   no hint), for R_minor/R_major = 0.5, 0.1, 0.01 and 0.001. */
+   no hint), for R_minor/R_major = 0.5, 0.1, 0.01 and 0.001; dc_jkr_geometry
+   best of 5 loops of 2000 calls. */
 #include "../unit/check.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/jkr_elliptic.h"
@@ -159,9 +160,7 @@ static void bench_elliptic(void)
   double tcold = 0, twarm = 0, tgeo = 0, s = 0;
   for (int k = 0; k < 4; k++) {
     dc_jkr_geom G;
-    const double t0 = now();
-    for (int r = 0; r < 200; r++) { dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, 0.05 + 1e-6 * r, &G); s += G.F_pull; }
-    tgeo += (now() - t0) / 200;
+    TIME_BEST(tgeo, 2000, { dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, 0.05 + 1e-6 * i, &G); s += G.F_pull; });
     dc_jkr_geometry(1e-3, 1e-3 * ratios[k], 1e9, 0.05, &G);
     const double db = G.delta_break, span = 50.0 * fabs(db) - db;
     dc_jkr_state st;
@@ -187,8 +186,7 @@ static void bench_elliptic(void)
     twarm += (t2 - t1) / ((double)REP * N);
     tcold += (t3 - t2) / ((double)(REP / 4) * N);
     printf("  R_minor/R_major = %-6g  warm %6.1f ns, cold %6.1f ns, dc_jkr_geometry %6.0f ns\n", ratios[k],
-           1e9 * (t2 - t1) / ((double)REP * N), 1e9 * (t3 - t2) / ((double)(REP / 4) * N), 1e9 * tgeo);
-    tgeo = 0;
+           1e9 * (t2 - t1) / ((double)REP * N), 1e9 * (t3 - t2) / ((double)(REP / 4) * N), tgeo);
   }
   sink = s;
   printf("elliptic JKR F(delta), warm-start hint     %8.1f     %.2e      %.1f   (%d states)\n", 1e9 * twarm / 4,

@@ -177,6 +177,61 @@ static void test_extrema_table(void)
   CHECK(rows == 10);
 }
 
+/* dc_jkr_geometry's tabulated reduced geometry (jkr_geometry_poly.h)
+   against jkr_geometry_dense.csv: the same extrema found with mpmath at
+   300 ratios over [1e-6, 1 - 1e-12], none a fitting node
+   (gen_jkr_geometry_poly.py); e^2 relative (its relative precision near
+   the circle), the reduced overlaps and forces relative, in ulps of the
+   reference doubles: within 6 (seen: 4, the scaled values dbar_pull,
+   Pbar_break and Pbar_pull taking two roundings more). And against the library's own map
+   (dc_jkr_at_eccentricity) on 2000 ratios: the overlap at the tabulated
+   e^2 of separation and the force at that of pull-off equal the tabulated
+   extremal values to 1e-13 (the map's own rounding near the Hertz state of
+   slender contacts reaches ~1e-14). */
+static void test_geometry_dense(void)
+{
+  FILE *f = check_open_reference("jkr_geometry_dense.csv");
+  if (!f) return;
+  static const char *const names[7] = {"e2_hertz", "e2_break", "e2_pull", "dbar_break", "Pbar_break", "dbar_pull",
+                                       "Pbar_pull"};
+  double v[8], worst[7] = {0}, at[7] = {0};
+  int rows = 0;
+  check_read_row(f, v, 8);   /* column names */
+  while (check_read_row(f, v, 8) == 8) {
+    dc_jkr_geom G;
+    CHECK(dc_jkr_geometry(1.0, v[0], 1e9, 0.05, &G) == DC_OK && !G.circular);
+    const double got[7] = {G.e2_hertz, G.e2_break, G.e2_pull, G.dbar_break, G.F_break / G.F_scale,
+                           G.delta_pull / G.delta_scale, G.F_pull / G.F_scale};
+    for (int k = 0; k < 7; k++) {
+      int e;
+      frexp(v[1 + k], &e);
+      const double u = fabs(got[k] - v[1 + k]) / ldexp(1.0, e - 53);
+      if (u > worst[k]) { worst[k] = u; at[k] = v[0]; }
+    }
+    rows++;
+  }
+  fclose(f);
+  CHECK(rows == 300);
+  printf("jkr geometry vs mpmath (%d ratios), worst in ulp of the reference double:\n ", rows);
+  for (int k = 0; k < 7; k++) {
+    printf(" %s %.0f (r = %.3g)%s", names[k], worst[k], at[k], k == 3 ? "\n " : "");
+    CHECK(worst[k] <= 6.0);
+  }
+  printf("\n");
+  double wd = 0.0, wF = 0.0;
+  for (int i = 0; i < 2000; i++) {
+    const double r = i < 1800 ? pow(10.0, -6.0 + 6.0 * i / 1800.0) : 1.0 - pow(10.0, -12.0 + 11.0 * (i - 1800) / 200.0);
+    dc_jkr_geom G;
+    dc_jkr_state sb, sp;
+    CHECK(dc_jkr_geometry(1e-3, 1e-3 * r, 1e9, 0.05, &G) == DC_OK);
+    CHECK(dc_jkr_at_eccentricity(&G, G.e2_break, &sb) == DC_OK && dc_jkr_at_eccentricity(&G, G.e2_pull, &sp) == DC_OK);
+    wd = fmax(wd, fabs(sb.delta / G.delta_break - 1.0));
+    wF = fmax(wF, fabs(sp.F / G.F_pull - 1.0));
+  }
+  printf("the map at the tabulated extrema (2000 ratios): delta_break %.2g, F_pull %.2g relative\n", wd, wF);
+  CHECK(wd <= 1e-13 && wF <= 1e-13);
+}
+
 static void test_force_table(void)
 {
   FILE *f = check_open_reference("jkr_elliptic_force.csv");
@@ -543,6 +598,7 @@ int main(void)
   test_sphere_dense();
   test_sphere_closed_forms();
   test_extrema_table();
+  test_geometry_dense();
   test_force_table();
   test_circular_limit();
   test_hertz_limit();
