@@ -1,13 +1,19 @@
 /* Elliptic Hertz contact: eccentricity, correction factors, force and area
    (review Eqs. 1-5, 11-14; conventions and seed corrections in the header). */
 #include "dc/hertz_elliptic.h"
-#include "dc/elliptic_integrals.h"
 #include "dc/status.h"
 #include "scaled_product.h"
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
-#include "hertz_eccentricity_cheb.h"
+#include "hertz_geometry_poly.h"
+#include "dc/poly14.h"
+
+#if DC_HG_NROWS != DC_POLY14_NROWS || DC_HG_NLANES != 8
+#error "hertz_geometry_poly.h: row or lane count differs from dc_poly14 and dc_hertz_geometry below"
+#endif
 
 int dc_hertz_eccentricity_approx(double ratio, double *e2)
 {
@@ -18,35 +24,62 @@ int dc_hertz_eccentricity_approx(double ratio, double *e2)
   return DC_OK;
 }
 
-static double clenshaw(const double *c, double x)
+/* The variables of hertz_geometry_poly.h at r in [DC_HERTZ_RATIO_MIN, 1):
+   t = ln r, its piece p (from the exponent and the two leading mantissa
+   bits of u = DC_HG_TAU - t) and x = t - dc_hg_tc[p]. With r = 2^k m, m in
+   [2^-1/2, 2^1/2), t = k ln 2 + ln m and x = (k LN2_HI - tc) + (ln m + k
+   LN2_LO), the first bracket exact (fdlibm's split of ln 2): x is off by
+   ~1e-16 however large |t|, where log(r) itself is off by up to 2e-15. */
+typedef struct {
+  double t, x;
+  int p;
+} hg_var;
+
+static inline hg_var hg_variables(double r)
 {
-  const double x2 = 2.0 * x;
-  double b1 = 0.0, b2 = 0.0;
-  for (int j = DC_ECC_NCOEF - 1; j > 0; j--) {
-    const double b0 = x2 * b1 - b2 + c[j];
-    b2 = b1;
-    b1 = b0;
+  static const double LN2_HI = 6.93147180369123816490e-01, LN2_LO = 1.90821492927058770002e-10;
+  uint64_t b;
+  memcpy(&b, &r, sizeof b);
+  int k = (int)(b >> 52) - 1023;   /* r is normal and positive */
+  b = (b & 0x000fffffffffffffull) | 0x3ff0000000000000ull;
+  double m;
+  memcpy(&m, &b, sizeof m);
+  if (m > M_SQRT2) {
+    m *= 0.5;
+    k++;
   }
-  return x * b1 - b2 + c[0];
+  const double th = k * LN2_HI, tl = log(m) + k * LN2_LO;
+  hg_var v;
+  v.t = th + tl;
+  const double u = DC_HG_TAU - v.t;
+  memcpy(&b, &u, sizeof b);
+  const int p = (int)(b >> 50) - (1023 << 2) - 2;
+  v.p = p < 0 ? 0 : p < DC_HG_PIECES ? p : DC_HG_PIECES - 1;
+  v.x = (th - dc_hg_tc[v.p]) + tl;
+  return v;
 }
 
-/* e^2 and 1 - e^2 solving Eq. 13 for ratio in [DC_HERTZ_RATIO_MIN, 1]:
-   e^2 = (1 - r) h(r) for r >= 1/4 and 1 - e^2 = r g(ln r) below, with h, g
-   the Chebyshev fits of tests/reference/gen_hertz_eccentricity_cheb.py
-   (relative error < 1e-16, so both keep full precision at both ends). */
-static void eccentricity(double ratio, double *m, double *m1)
+/* R_major (head + s) for the lane value head + s of R_force/R_major,
+   |s| <= 0.22 head, R_major < 1e300: R_major split in halves of 26 bits
+   (Veltkamp) makes both products with the 26-bit head exact, so the
+   result has two small roundings and one at full size (< 0.75 ulp), not
+   those of the lane value and of a product (1 ulp). */
+static inline double r_force(double Rmaj, double head, double s)
 {
-  if (ratio >= 0.25) {
-    const double inv_w = DC_ECC_H_PIECES / 0.75;
-    const double s = (ratio - 0.25) * inv_w;
-    const int p = s < DC_ECC_H_PIECES - 1 ? (int)s : DC_ECC_H_PIECES - 1;
-    *m = (1.0 - ratio) * clenshaw(dc_ecc_h[p], 2.0 * (s - p) - 1.0);
+  const double c = 134217729.0 * Rmaj, hi = c - (c - Rmaj), lo = Rmaj - hi;   /* 2^27 + 1 */
+  return hi * head + (lo * head + Rmaj * s);
+}
+
+/* e^2 and 1 - e^2 from lane 0 (y0) at t = ln r in piece p: e^2 = -t y0 near
+   the circle, 1 - e^2 = r y0 below; the other by one subtraction, which
+   loses nothing (the one computed is below about 1/2). */
+static inline void hg_eccentricity(int p, double t, double ratio, double y0, double *m, double *m1)
+{
+  if (p < DC_HG_TOP_PIECES) {
+    *m = -t * y0;
     *m1 = 1.0 - *m;
   } else {
-    const double inv_w = DC_ECC_G_PIECES / (DC_ECC_G_THI - DC_ECC_G_TLO);
-    const double s = fmax(0.0, (log(ratio) - DC_ECC_G_TLO) * inv_w);
-    const int p = s < DC_ECC_G_PIECES - 1 ? (int)s : DC_ECC_G_PIECES - 1;
-    *m1 = ratio * clenshaw(dc_ecc_g[p], 2.0 * (s - p) - 1.0);
+    *m1 = ratio * y0;
     *m = 1.0 - *m1;
   }
 }
@@ -54,14 +87,22 @@ static void eccentricity(double ratio, double *m, double *m1)
 int dc_hertz_eccentricity(double ratio, double *e2, double *m1)
 {
   if (!(ratio >= DC_HERTZ_RATIO_MIN && ratio <= 1.0)) return DC_EDOM;
-  eccentricity(ratio, e2, m1);
+  if (ratio == 1.0) {
+    *e2 = 0.0;
+    *m1 = 1.0;
+    return DC_OK;
+  }
+  const hg_var v = hg_variables(ratio);
+  double y0, s0;
+  dc_poly14(&dc_hg_poly[v.p][0][0], DC_HG_NLANES, 1, v.x, &y0, &s0);
+  hg_eccentricity(v.p, v.t, ratio, y0, e2, m1);
   return DC_OK;
 }
 
 int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *out)
 {
   if (!(R1 > 0.0 && R2 > 0.0 && isfinite(R1) && isfinite(R2))) return DC_EDOM;
-  const double Rmaj = fmax(R1, R2), Rmin = fmin(R1, R2);
+  const double Rmaj = R1 > R2 ? R1 : R2, Rmin = R1 > R2 ? R2 : R1;
   const double ratio = Rmin / Rmaj;
   if (ratio < DC_HERTZ_RATIO_MIN) return DC_EDOM;
   dc_hertz_geom g;
@@ -80,28 +121,24 @@ int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *out)
     *out = g;
     return DC_OK;
   }
-  dc_ellint el;
-  eccentricity(ratio, &g.e2, &g.m1);
-  if (ratio >= 0.25) dc_ellint_m(g.e2, &el);
-  else dc_ellint_m1(g.m1, &el);
-  g.K = el.K; g.E = el.E; g.D = el.D;
-  /* with q = 1/(K (1-e^2)^1/2): Eq. 11 squared is gamma^2 = pi^2/2 E/(K^3 (1-e^2))
-     = pi^2/2 E q^3 (1-e^2)^1/2, Eq. 12 is beta = 2 E q */
-  const double sm1 = sqrt(g.m1);
-  const double q = 1.0 / (el.K * sm1);
-  const double gamma2 = 0.5 * M_PI * M_PI * el.E * q * q * q * sm1;
-  g.gamma = sqrt(gamma2);                                                   /* Eq. 11 */
-  g.beta = 2.0 * el.E * q;                                                  /* Eq. 12 */
-  g.R_force = g.Rc * gamma2;
-  g.R_area = g.Rc * g.beta;
-  if (!(isfinite(g.R_force) && isfinite(g.R_area))) {
-    /* R_force, R_area <= R_major (equal for the circle); near the circle,
-       with R_major within rounding of DBL_MAX, the products above round past
-       it: the same as fractions of R_major, which exceed 1 by rounding only */
-    g.R_force = Rmaj * fmin(1.0, g.Rc / Rmaj * gamma2);
-    g.R_area = Rmaj * fmin(1.0, g.Rc / Rmaj * g.beta);
-  }
-  if (!(isfinite(g.R_force) && isfinite(g.R_area))) return DC_ERANGE;   /* not reached */
+  /* every output from one evaluation of the lanes of hertz_geometry_poly.h
+     at t = ln r (Eqs. 11-13 to an ulp or two): e^2 or 1 - e^2; B, E, D
+     (K = B + D, so that K - D is B to a rounding); gamma and beta times
+     r^1/2; R_force/R_major = gamma^2 r/(1 + r) and R_area/(R_major r^1/2)
+     = beta r^1/2/(1 + r), both at most 1 (so R_force and R_area cannot
+     overflow) */
+  const hg_var v = hg_variables(ratio);
+  const double sr = sqrt(ratio);
+  double y[DC_HG_NLANES], s[DC_HG_NLANES];
+  dc_poly14(&dc_hg_poly[v.p][0][0], DC_HG_NLANES, DC_HG_NLANES, v.x, y, s);
+  hg_eccentricity(v.p, v.t, ratio, y[0], &g.e2, &g.m1);
+  g.K = y[1] + y[3];   /* B + D */
+  g.E = y[2];
+  g.D = y[3];
+  g.gamma = y[4] / sr;                                    /* Eq. 11 */
+  g.beta = y[5] / sr;                                     /* Eq. 12 */
+  g.R_force = y[6] >= 1.0 ? Rmaj : Rmaj < 1e300 ? r_force(Rmaj, dc_hg_poly[v.p][0][6], s[6]) : Rmaj * y[6];
+  g.R_area = Rmaj * (y[7] * sr < 1.0 ? y[7] * sr : 1.0);
   *out = g;
   return DC_OK;
 }

@@ -1,21 +1,27 @@
 /* Johnson-Greenwood approximate JKR for elliptical contacts (review Eqs.
    19-28; derivation, conventions and the seed corrections are in
    dc/jkr_elliptic.h): the state as a function of the eccentricity, and the
-   geometry of a contact (Hertz shape, separation and pull-off points by
-   the extremum searches). The solve for a given overlap, dc_jkr_contact, is
-   in jkr_elliptic_solve.c; classical JKR for spheres in jkr_sphere.c. */
+   geometry of a contact (Hertz shape, separation and pull-off points,
+   tabulated in the radius ratio). The solve for a given overlap,
+   dc_jkr_contact, is in jkr_elliptic_solve.c; classical JKR for spheres in
+   jkr_sphere.c. */
 #include "dc/jkr_elliptic.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
-#include "dc/root_find.h"
 #include "dc/status.h"
 #include "dc/contract.h"
+#include "dc/poly14.h"
 #include "jkr_cbrt.h"
-#include "jkr_extrema_guess.h"
 #include "jkr_private.h"
 #include <float.h>
 #include <math.h>
 #include <string.h>
+
+#include "jkr_geometry_poly.h"
+
+#if DC_JG_NLANES != 18
+#error "jkr_geometry_poly.h: lane count differs from dc_jkr_geometry"
+#endif
 
 /* dC/dm = (D - (4 - 3m) C)/(2 m (1-m)) (from dK/dm = B/(2 m1), dD/dm =
    (D - C)/(2 m1), dB/dm = C/2). The numerator cancels to O(m) as m -> 0
@@ -115,106 +121,19 @@ void dc_jkr_eval_m_(const dc_jkr_geom *G, double m, double m1, double sv, jg_poi
   p->dPbar = sv * grr * (Y * dln + dY);
 }
 
-/* The v-derivative of dbar (which = 0) or Pbar (which = 1) at v; the
-   point is kept in *p. */
-static double deriv_of(const dc_jkr_geom *G, double v, int which, jg_point *p)
-{
-  jg_eval(G, v, p);
-  return which ? p->dPbar : p->ddbar;
-}
-
-/* The extremum searches: dc_root_brent_ends on that derivative, the
-   points kept in the finder's three slots (so the root's point needs no
-   evaluation of its own). */
-typedef struct {
-  const dc_jkr_geom *G;
-  int which;
-  jg_point pt[3];
-} ext_search;
-
-static double ext_deriv(double v, void *ctx, int slot)
-{
-  ext_search *e = ctx;
-  return deriv_of(e->G, v, e->which, &e->pt[slot]);
-}
-
-/* The zero of the derivative over [a, b] with fa < 0 < fb (a minimum; the
-   points at a and b in slots 0 and 1), to 1e-12 relative in v: the
-   extremal values (delta_break, F_pull) are then exact to rounding (second
-   order), e2_break and e2_pull to ~1e-12. Its point in *p. Any failure,
-   the lack of a sign change included, is DC_ENOCONV (the search failed). */
-static int ext_root(ext_search *e, double a, double b, double fa, double fb, double *root, jg_point *p)
-{
-  if (!(fa < 0.0 && fb > 0.0)) return DC_ENOCONV;
-  dc_root_result r;
-  if (dc_root_brent_ends(ext_deriv, e, a, b, fa, fb, 1e-12, 1e-300, 200, &r) != DC_OK) return DC_ENOCONV;
-  *root = r.x;
-  *p = e->pt[r.slot];
-  return DC_OK;
-}
-
-/* Bracket [lo, hi] around the guess of extremum `which` (0: separation,
-   1: pull-off), half-width `hw` (relative), clipped to [vmin, vmax]. The
-   guess: ln(v/v_H) from jkr_extrema_guess.h (the library's own searches at
-   16 ratios per decade) by 4-point Lagrange interpolation in log10 of the
-   ratio, within 4e-7 of the extremum; it only places the bracket, the
-   search finds the extremum to rounding. */
-static void ext_bracket(const dc_jkr_geom *G, int which, double hw, double vmin, double vmax,
-                        double *lo, double *hi)
-{
-  double u = -DC_JKR_GUESS_PER_DECADE * log10(G->lam2);
-  if (!(u > 0.0)) u = 0.0;
-  if (u > DC_JKR_GUESS_ROWS - 1) u = DC_JKR_GUESS_ROWS - 1;
-  int i = (int)u - 1;
-  if (i < 0) i = 0;
-  if (i > DC_JKR_GUESS_ROWS - 4) i = DC_JKR_GUESS_ROWS - 4;
-  const double f = u - i;   /* position in the stencil rows i .. i+3, in [0, 3] */
-  const int col = (G->use_m1 ? 2 : 0) + which;
-  const double y0 = dc_jkr_extrema_guess[i][col], y1 = dc_jkr_extrema_guess[i + 1][col];
-  const double y2 = dc_jkr_extrema_guess[i + 2][col], y3 = dc_jkr_extrema_guess[i + 3][col];
-  const double lg = -(f - 1) * (f - 2) * (f - 3) / 6 * y0 + f * (f - 2) * (f - 3) / 2 * y1 -
-                    f * (f - 1) * (f - 3) / 2 * y2 + f * (f - 1) * (f - 2) / 6 * y3;
-  const double g = G->v_hertz * exp(lg);
-  *lo = fmax(vmin, g * (1.0 - hw));
-  *hi = fmin(vmax, g * (1.0 + hw));
-}
-
-/* Brent on the derivative `which` from a bracket around the tabulated
-   guess, widened (x8) until the derivative changes sign, else over the
-   full range [vmin, vmax]. */
-static int find_extremum(const dc_jkr_geom *G, int which, double vmin, double vmax, double *root,
-                         jg_point *p)
-{
-  ext_search e;
-  e.G = G;
-  e.which = which;
-  for (double hw = 4e-6; hw < 1.0; hw *= 8.0) {
-    double lo, hi;
-    ext_bracket(G, which, hw, vmin, vmax, &lo, &hi);
-    if (!(lo < hi)) continue;
-    const double flo = deriv_of(G, lo, which, &e.pt[0]);
-    if (!(flo < 0.0)) continue;
-    const double fhi = deriv_of(G, hi, which, &e.pt[1]);
-    if (fhi > 0.0) return ext_root(&e, lo, hi, flo, fhi, root, p);
-  }
-  const double flo = deriv_of(G, vmin, which, &e.pt[0]);
-  const double fhi = deriv_of(G, vmax, which, &e.pt[1]);
-  return ext_root(&e, vmin, vmax, flo, fhi, root, p);
-}
-
 /* The geometry is built in a local copy and handed out only when every
-   double of it is finite: on any error *out is untouched. */
+   double of it is finite: on any error *out is untouched. The radii, E*,
+   w, Rhat, lambda, lam2 and l2c are finite by the domain check, the
+   Hertz part by dc_hertz_geometry's status; the rest is checked. */
 static int geometry_done(const dc_jkr_geom *G, dc_jkr_geom *out)
 {
-  const dc_hertz_geom *h = &G->hertz;
-  const double v[] = {G->R_major, G->R_minor, G->Rhat, G->lambda, G->lam2, G->l2c, G->Estar, G->w,
-                      h->R_major, h->R_minor, h->Rc, h->e2, h->m1, h->K, h->E, h->D, h->gamma, h->beta,
-                      h->R_force, h->R_area, G->e2_hertz, G->a_scale, G->delta_scale, G->F_scale,
-                      G->e2_break, G->delta_break, G->F_break, G->dbar_break, G->e2_pull, G->delta_pull,
-                      G->F_pull, G->guess_c1, G->guess_c2, G->pert_X0, G->pert_X1, G->pert_g0, G->pert_g1,
-                      G->pert_P0, G->pert_P1, G->pert_rho0, G->dbar_switch, G->v_hertz, G->v_break};
-  for (size_t i = 0; i < sizeof v / sizeof v[0]; i++)
-    if (!isfinite(v[i])) return DC_ERANGE;
+  const double v[] = {G->e2_hertz, G->a_scale, G->delta_scale, G->F_scale, G->e2_break, G->delta_break,
+                      G->F_break, G->dbar_break, G->e2_pull, G->delta_pull, G->F_pull, G->guess_c1, G->guess_c2,
+                      G->pert_X0, G->pert_X1, G->pert_g0, G->pert_g1, G->pert_P0, G->pert_P1, G->pert_rho0,
+                      G->dbar_switch, G->v_hertz, G->v_break};
+  double nan_if_any = 0.0;   /* x - x is 0 for a finite x, NaN for inf or NaN */
+  for (size_t i = 0; i < sizeof v / sizeof v[0]; i++) nan_if_any += v[i] - v[i];
+  if (nan_if_any != 0.0) return DC_ERANGE;
   *out = *G;
   return DC_OK;
 }
@@ -224,7 +143,7 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *o
   if (!(R1 > 0.0 && R2 > 0.0 && isfinite(R1) && isfinite(R2) && Estar > 0.0 && isfinite(Estar) &&
         w >= 0.0 && isfinite(w)))
     return DC_EDOM;
-  const double Rmaj = fmax(R1, R2), Rmin = fmin(R1, R2);
+  const double Rmaj = R1 > R2 ? R1 : R2, Rmin = R1 > R2 ? R2 : R1;
   if (Rmin / Rmaj < DC_JKR_RATIO_MIN) return DC_EDOM;
   dc_jkr_geom geom;
   dc_jkr_geom *const G = &geom;
@@ -237,19 +156,15 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *o
   G->l2c = (Rmaj - Rmin) / Rmaj;
   G->Estar = Estar;
   G->w = w;
-  /* The w = 0 contact is dc_hertz_contact with this geometry. For w > 0 it
-     only gives the starting value of the Hertz shape, which near the circle
-     (1 - ratio < 1e-3) is not needed: a failure there is not passed on. */
-  int st = dc_hertz_geometry(Rmaj, Rmin, &G->hertz);
-  const int hertz_ok = st == DC_OK;
-  if (!hertz_ok) memset(&G->hertz, 0, sizeof G->hertz);
+  /* the w = 0 contact is dc_hertz_contact with this geometry */
+  const int st = dc_hertz_geometry(Rmaj, Rmin, &G->hertz);
+  if (st != DC_OK) return st;
   G->e2_hertz = G->hertz.e2;
   G->circular = G->l2c < DC_JKR_CIRCULAR_TOL;
   G->a_scale = dc_jkr_length_scale_(w, Estar, G->Rhat);
   G->delta_scale = dc_jkr_delta_scale_(G->a_scale, G->Rhat);
   G->F_scale = 8.0 * w * G->Rhat;
   if (!(G->delta_scale > 0.0)) {  /* w = 0 (or so small that the overlap scale underflows) */
-    if (!hertz_ok) return st;
     G->w = 0.0;
     G->a_scale = G->delta_scale = G->F_scale = 0.0;
     G->e2_break = G->e2_pull = G->e2_hertz;
@@ -265,77 +180,49 @@ int dc_jkr_geometry(double R1, double R2, double Estar, double w, dc_jkr_geom *o
     G->delta_pull = ap * ap / R - sqrt(2.0 * M_PI * w * ap / Estar);
     return geometry_done(G, out);
   }
-  /* Solver variable v (e^2, or 1 - e^2 for slender contacts), and the
-     Hertz state as the zero of Qn (dc_jkr_Qn_) by Newton's method. Start:
-     dc_hertz_geometry's e^2, except near the circle, where that comes from
-     the ratio R_minor/R_major and so carries an absolute error ~eps (all
-     of e^2 ~ 4/3 (1 - ratio) at 1 - ratio = 1e-9 and below); there Qn =
-     l2c pi/4 - 3 pi m/16 + O(m^2, l2c m) gives e^2 = 4/3 l2c. */
-  if (!hertz_ok && !(G->l2c < 1e-3)) return st;
-  G->use_m1 = G->e2_hertz > 0.5;
-  double vH = G->use_m1 ? G->hertz.m1 : G->hertz.e2;
-  if (G->l2c < 1e-3) vH = 4.0 / 3.0 * G->l2c;
-  for (int i = 0;; i++) {
-    const double m = G->use_m1 ? 1.0 - vH : vH, m1 = G->use_m1 ? vH : 1.0 - vH;
-    dc_ellint el;
-    if (m <= 0.5) dc_ellint_m(m, &el); else dc_ellint_m1(m1, &el);
-    double Qn, dQn;
-    dc_jkr_Qn_(G, m, m1, &el, &Qn, &dQn);
-    const double step = (G->use_m1 ? -1.0 : 1.0) * Qn / dQn;
-    double vn = vH - step;
-    if (!(vn > 0.0 && vn < 1.0)) vn = vn <= 0.0 ? 0.5 * vH : 0.5 * (1.0 + vH);
-    if (i == 40 || !isfinite(vn)) return DC_ENOCONV;
-    /* Newton is quadratic: once the step is at the rounding level of Qn
-       (which can leave it a few eps above 4 eps vH for ever, seen at
-       R_minor/R_major = 0.0772), applying it is exact to rounding */
-    const int done = fabs(step) <= 64.0 * DBL_EPSILON * vH;
-    vH = vn;
-    if (done) break;
-  }
+  /* The reduced geometry depends on R_minor/R_major alone: the Hertz shape
+     (Qn = 0), the separation point (min dbar), the pull-off point (min
+     Pbar), the first-order expansion at the Hertz end (X = X0 + X1 rho, g =
+     g0 + g1 rho, F/(F_scale dbar^3/2) = P0 + P1 rho, rho = rho0 dbar^-3/4;
+     P1 is zero), the switch to it (where the distance to the Hertz state is
+     1e-8 of v_H) and the starting-value model of the solve (|v_H - v| =
+     |v_H - v_b|/(1 + c1 d^1/2 + c2 d^3/4), d = dbar - dbar_b, c2 from the
+     Hertz asymptote, c1 through the pull-off point, clipped at 0), from
+     the tables of jkr_geometry_poly.h (tests/reference/gen_jkr_geometry_poly.py,
+     mpmath, within ~1 ulp). t = ln(R_minor/R_major) from whichever of
+     lam2 and l2c = 1 - lam2 is below 1/2 (each rounded once from the
+     radii: the other can lose relative precision); the solver variable v
+     is e^2, or 1 - e^2 for slender contacts (e2_H > 1/2). */
+  const double t = G->lam2 < 0.5 ? log(G->lam2) : log1p(-G->l2c);
+  const int pc = -t < DC_JG_PIECES - 1 ? (int)(-t) : DC_JG_PIECES - 1;
+  double y[DC_JG_NLANES], rest[DC_JG_NLANES];
+  dc_poly14(&dc_jg_poly[pc][0][0], DC_JG_NLANES, DC_JG_NLANES, t - dc_jg_centre[pc], y, rest);
+  const double eH = G->l2c * y[0], m1H = G->lam2 * y[1];
+  G->use_m1 = eH > 0.5;
+  const double vH = G->use_m1 ? m1H : eH, vb = G->use_m1 ? y[3] : eH * y[2], vp = G->use_m1 ? m1H * y[5] : eH * y[4];
   G->v_hertz = vH;
   G->e2_hertz = G->use_m1 ? 1.0 - vH : vH;
-  /* Extrema of dbar and Pbar on the family: dbar -> 0- and Pbar -> 0-
-     for a vanishing contact (e^2 -> 0), both -> +oo at the Hertz end. In v
-     the derivative is < 0 towards the vanishing contact when v = e^2 and
-     > 0 when v = 1 - e^2. */
-  const double v0 = G->use_m1 ? 1.0 - 1e-6 * G->e2_hertz : 1e-6 * vH;  /* near e^2 = 0 */
-  const double v1 = G->use_m1 ? vH * (1.0 + 1e-6) : vH * (1.0 - 1e-6);  /* near Hertz   */
-  double vb, vp;
-  jg_point p, pp;
-  st = find_extremum(G, 0, fmin(v0, v1), fmax(v0, v1), &vb, &p);
-  if (st != DC_OK) return st;
-  st = find_extremum(G, 1, fmin(vb, v1), fmax(vb, v1), &vp, &pp);
-  if (st != DC_OK) return st;
   G->v_break = vb;
-  G->e2_break = p.m;
-  G->dbar_break = p.dbar;
-  G->delta_break = G->delta_scale * p.dbar;
-  G->F_break = G->F_scale * p.Pbar;
-  const double dbar_b = p.dbar;
-  p = pp;
-  G->e2_pull = p.m;
-  G->delta_pull = G->delta_scale * p.dbar;
-  G->F_pull = G->F_scale * p.Pbar;
-  /* Hertz end: first-order coefficients and the switch to them */
-  jg_eval(G, vH, &p);
-  G->pert_X0 = p.X;
-  G->pert_g0 = p.g;
-  G->pert_rho0 = sqrt(p.g) * sqrt(p.X) * sqrt(sqrt(p.X));   /* g0^1/2 X0^3/4 */
-  G->pert_X1 = p.dX / p.drho;
-  G->pert_g1 = p.dg / p.drho;
-  G->pert_P0 = p.Y / (p.X * sqrt(p.X));
-  G->pert_P1 = (p.dY * p.X - 1.5 * p.Y * p.dX) / (p.X * p.X * sqrt(p.X)) / p.drho;
-  const double rho_sw = 1e-8 * vH * fabs(p.drho);
-  const double g23X = dc_jkr_cbrt_(p.g * p.g) * p.X, crs = dc_jkr_cbrt_(rho_sw);
-  G->dbar_switch = g23X / (crs * crs * crs * crs);   /* g^2/3 X rho_sw^-4/3 */
-  /* Starting values: |v_H - v| = |v_H - v_b|/(1 + c1 d^1/2 + c2 d^3/4),
-     d = dbar - dbar_b; c2 from the Hertz asymptote (rho = |drho/dv|
-     |v_H - v|, dbar = g^2/3 X rho^-4/3), c1 through the pull-off point. */
-  const double span = fabs(vH - vb);
-  G->guess_c2 = span * fabs(p.drho) / (sqrt(g23X) * sqrt(sqrt(g23X)));   /* (g^2/3 X)^-3/4 */
-  const double dp = G->delta_pull / G->delta_scale - dbar_b;
-  const double need = span / fabs(vH - vp) - 1.0 - G->guess_c2 * sqrt(dp) * sqrt(sqrt(dp));
-  G->guess_c1 = need > 0.0 ? need / sqrt(dp) : 0.0;
+  G->e2_break = G->use_m1 ? 1.0 - vb : vb;
+  G->dbar_break = y[6];
+  G->delta_break = G->delta_scale * y[6];
+  G->F_break = G->F_scale * y[7];
+  G->e2_pull = G->use_m1 ? 1.0 - vp : vp;
+  G->delta_pull = G->delta_scale * y[8];
+  G->F_pull = G->F_scale * y[9];
+  G->pert_X0 = y[10];
+  G->pert_X1 = y[11];
+  G->pert_g0 = sqrt(m1H);
+  G->pert_g1 = G->l2c * y[12];
+  G->pert_P0 = y[13];
+  G->pert_P1 = 0.0;
+  G->pert_rho0 = y[17];
+  /* the switch, tabulated with the distance measured in e^2: in 1 - e^2
+     it is (e2_H/m1_H)^4/3 times that */
+  const double q = eH / m1H;
+  G->dbar_switch = G->use_m1 ? y[14] * q * dc_jkr_cbrt_(q) : y[14];
+  G->guess_c1 = y[15] > 0.0 ? y[15] : 0.0;
+  G->guess_c2 = y[16];
   return geometry_done(G, out);
 }
 

@@ -67,7 +67,16 @@ int dc_jkr_contact(const dc_jkr_geom *G, double delta, dc_jkr_hint *hint, dc_jkr
   const double dbar_b = G->dbar_break;
   const double dtarget = dbar_t - dbar_b;
   dc_jkr_state t;
-  if (!(dtarget > 0.0)) {   /* exactly at the separation point */
+  /* at the separation point, or above it by less than the rounding of the
+     map there: dbar_b is the exact minimum (jkr_geometry_poly.h), the
+     map's own minimum can lie above it by ~1e-14 relative (slender
+     contacts), and a target between the two has no root */
+  int at_break = !(dtarget > 0.0);
+  if (!at_break && dtarget < 1e-10 * fabs(dbar_b)) {
+    jg_eval(G, vb, &p);
+    at_break = !(p.dbar < dbar_t);
+  }
+  if (at_break) {
     jg_eval(G, vb, &p);
     dc_jkr_elliptic_fill_(G, &p, 0.0, &t);
     t.delta = delta;

@@ -7,9 +7,23 @@
 #include <float.h>
 #include <math.h>
 
+#include "jkr_sphere_poly.h"
+
 /* Units: C1 = 8 w R^2/(pi E*), a = C1^1/3 x^2, delta = C1^2/3/(2R) dbar,
    F = 8 w R Fbar. With rho = x^-3 the elliptic formulas at g = 1 give
-     dbar = 2 x^4 - pi x,   Fbar = 4/(3 pi) x^6 - x^3.                  */
+     dbar = 2 x^4 - pi x,   Fbar = 4/(3 pi) x^6 - x^3.
+   The inverse x(dbar) is tabulated once for all materials
+   (jkr_sphere_poly.h, tests/reference/gen_jkr_sphere_poly.py) in two
+   forms: from the separation point up in s = U^1/2 (dc_jkr_sphere, below),
+   and at the Hertz-like end, dbar >= 0.575, as psi(kappa) = a/(R
+   delta)^1/2 (dc/jkr_sphere.h), kappa = pi 2^-1/4 dbar^-3/4. */
+
+/* The piece of v in [0, n/inv_w] of n uniform pieces (the last one for
+   larger v or NaN). */
+static inline int uniform_piece(double v, double inv_w, int n)
+{
+  return v * inv_w < n - 1 ? (int)(v * inv_w) : n - 1;
+}
 
 /* The state at contact radius a > 0 in *t (delta from a); DC_ERANGE when
    a double of it overflows. */
@@ -78,6 +92,21 @@ double dc_jkr_sphere_delta_break(double R, double Estar, double w)
 
 int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s)
 {
+  double a0, nu;
+  if (dc_jkr_sphere_nu_(R, Estar, w, delta, &a0, &nu) && nu <= DC_JKR_NU_H) {
+    /* the Hertz-like end (dc/jkr_sphere.h), dF/d delta = (dF/da)/(d delta/da)
+       = 2 E* a0 psi (psi^2 + 3)/(3 psi^2 + 1) */
+    const double psi = dc_jkr_psi(nu, sqrt(nu)), psi2 = psi * psi;
+    const double a = a0 * psi;
+    s->contact = 1;
+    s->delta = delta;
+    s->a = s->b = a;
+    s->area = M_PI * a * a;
+    s->e2 = 0.0;
+    s->F = dc_jkr_sphere_force_(Estar, a0, delta, psi);
+    s->kn = 2.0 * Estar * a0 * (psi * (psi2 + 3.0) / (3.0 * psi2 + 1.0));
+    return DC_OK;
+  }
   if (!(R > 0.0 && Estar > 0.0 && w >= 0.0 && isfinite(R) && isfinite(Estar) && isfinite(w) &&
         isfinite(delta)))
     return DC_EDOM;
@@ -123,12 +152,10 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   }
   /* With x = x_b (1 + y), x_b^3 = pi/8 (the separation point), the quartic
      2 x^4 - pi x = dbar becomes y^2 (y^2 + 4 y + 6) = U, U = (dbar - dbar_b)
-     / (2 x_b^4) >= 0. In p = y^2 + 2 y it reads p k(p) = U^1/2 with k =
-     (1 + 2/(1 + (1 + p)^1/2)^2)^1/2 falling from 1.5^1/2 to 1; the rational
-     p ~ s (k0 b + s)/(b + s), s = U^1/2, k0 = 1.5^-1/2, b = 3.69 is within
-     2.5e-3 of the root for every U >= 0, and two Halley steps on the
-     quartic then reach rounding (2.5e-3 -> 5e-9 -> 2e-16, checked over U in
-     [1e-64, 1e20]). No transcendental call; one cube root for the scale. */
+     / (2 x_b^4) >= 0: y = s (y/s)(s) from the table in s = U^1/2 up to
+     S_H = 2 (dbar = 0.575, nu = 16), and above (inputs beyond 1e+-60 only:
+     the others took the Hertz-like end) from psi, x^2 = psi (dbar/2)^1/2
+     with nu = pi^2 2^-1/2 dbar^-3/2. */
   const double xb = 0.73229594378076163;       /* (pi/8)^1/3            */
   const double inv2xb4 = 1.7386953397031944;   /* 1/(2 x_b^4) = 4/(pi x_b) */
   const double dbar_b = -1.7254316679264337;   /* 2 x_b^4 - pi x_b = -3/4 pi x_b */
@@ -137,25 +164,25 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
      overlap dc_jkr_in_contact uses) to the last bit: the cbrt is only
      taken below delta_b */
   if (delta < delta_b && delta < dc_jkr_sphere_delta_break(R, Estar, w)) { dc_jkr_zero_state_(delta, s); return DC_OK; }
-  const double U = fmax(0.0, (delta - delta_b) / Ds * inv2xb4);
-  double y = 0.0;
-  if (U > 0.0) {
+  /* (from dbar where delta_b itself overflows: Ds beyond DBL_MAX/1.73) */
+  const double Uq = isfinite(delta_b) ? (delta - delta_b) / Ds * inv2xb4 : (delta / Ds - dbar_b) * inv2xb4;
+  const double U = Uq > 0.0 ? Uq : 0.0;
+  double x, c, cm1;   /* x, c = 8 x^3/pi and c - 1, free of cancellation at the separation point */
+  if (U <= DC_JKR_S_H * DC_JKR_S_H) {
     const double sU = sqrt(U);
-    const double p = sU * (0.81649658092772603 * 3.69 + sU) / (3.69 + sU);
-    y = p / (1.0 + sqrt(1.0 + p));
-    for (int i = 0; i < 2; i++) {
-      /* Halley on P = y^2 (y^2 + 4y + 6) - U: P' = 4y (y^2 + 3y + 3),
-         P'' = 12 (y^2 + 2y + 1) */
-      const double y2 = y * y;
-      const double P = y2 * (y2 + 4.0 * y + 6.0) - U;
-      const double P1 = 4.0 * y * (y2 + 3.0 * y + 3.0);
-      const double P2 = 12.0 * (y2 + 2.0 * y + 1.0);
-      y -= 2.0 * P * P1 / (2.0 * P1 * P1 - P * P2);
-    }
-    if (!(y > 0.0)) y = 0.0;
+    const int p = uniform_piece(sU, DC_JKR_S_PIECES / DC_JKR_S_H, DC_JKR_S_PIECES);
+    double ys, rest;
+    dc_poly14(&dc_jkr_poly_s[p][0][0], 1, 1, sU - dc_jkr_poly_s_centre[p], &ys, &rest);
+    const double y = sU * ys;
+    x = xb + xb * y;
+    c = (1.0 + y) * (1.0 + y) * (1.0 + y);
+    cm1 = y * (3.0 + y * (3.0 + y));
+  } else {
+    const double dbar = delta / Ds, nu_d = 6.978864199638879 / (dbar * sqrt(dbar));   /* pi^2 2^-1/2 */
+    x = sqrt(dc_jkr_psi(nu_d, sqrt(nu_d)) * sqrt(0.5 * dbar));
+    c = 8.0 / M_PI * x * x * x;
+    cm1 = c - 1.0;
   }
-  const double x = xb + xb * y;
-  const double c = (1.0 + y) * (1.0 + y) * (1.0 + y);   /* 8 x^3 / pi */
   const double a = As * x * x;
   dc_jkr_state t;
   t.contact = 1;
@@ -165,10 +192,8 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
   t.delta = delta;
   /* F = 8 w R (4/(3 pi) x^3 - 1) x^3 = pi w R c (c/6 - 1) */
   t.F = M_PI * w * R * c * (c / 6.0 - 1.0);
-  /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)),
-     with 8x^3/pi - 1 = y (3 + 3y + y^2) free of cancellation at the
-     separation point */
-  t.kn = dc_jkr_finite_kn_(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), y * (3.0 + y * (3.0 + y)));
+  /* kn = (dF/dx)/(d delta/dx) = (8 w R/Ds) x^2 (8x^3 - 3 pi)/(pi (8x^3 - pi)) */
+  t.kn = dc_jkr_finite_kn_(8.0 * w * R / (M_PI * Ds) * x * x * (c - 3.0), cm1);
   if (!moderate && !dc_jkr_state_finite_(&t)) return DC_ERANGE;
   *s = t;
   return DC_OK;

@@ -139,7 +139,7 @@ private:
     double *ax = axisWanted(axis);
     relativeRadii(sidata, R_major, R_minor, ax);
     dc_contact c;
-    double P, Sn, kn, kt;
+    double P, Sn, kn, kt, a;
     if (w == 0.0) {
       double r_force = R_major, r_area = R_major;
       dc_hertz_geom g;
@@ -157,6 +157,11 @@ private:
         if (!sq) dc_hertz_geometry(R_major, R_major, &g);
         dc_hertz_normal(&g, Y, delta, &c);
       }
+    } else if (!sq && !ax && !forming && dc_jkr_sphere_near_hertz(R_major, Y, w, delta, &a, &P)) {
+      /* spheres at the Hertz-like end, the patch not stored: the inline
+         hot path of dc_jkr_sphere (the same bits) */
+      kn = Sn = dc_punch_stiffness_circle(Y, a);
+      kt = dc_mindlin_kt_circle(G, a);
     } else {
       dc_jkr_state s;
       double F_pull = 0.0;

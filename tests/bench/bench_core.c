@@ -1,6 +1,7 @@
 /* c_core speed against error for the elliptic Hertz family: ns per call of
    each function over a sweep of its domain, and the largest difference from
    a second method. A benchmark, not a test: it prints figures. */
+#include "../unit/check.h"
 #include "dc/curvature.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
@@ -123,5 +124,29 @@ int main(void)
     if (fabs(ga / g.gamma - 1) > worst_g) worst_g = fabs(ga / g.gamma - 1);
   }
   printf("Eq. 14 instead of Eq. 13: max rel. error of b/a %.3g, of gamma (force) %.3g over r in (1e-6, 1)\n", worst_e, worst_g);
+
+  /* dc_hertz_geometry against mpmath over r in [1e-12, 1] (ulps of the
+     reference doubles, which are themselves within half an ulp) */
+  FILE *f = check_open_reference("hertz_geometry_dense.csv");
+  if (f) {
+    static const char *const names[9] = {"e2", "m1", "K", "E", "D", "gamma", "beta", "R_force", "R_area"};
+    double v[10], worst[9] = {0};
+    int rows = 0;
+    while (check_read_row(f, v, 10) == 10) {
+      dc_hertz_geom g;
+      dc_hertz_geometry(1.0, v[0], &g);
+      const double got[9] = {g.e2, g.m1, g.K, g.E, g.D, g.gamma, g.beta, g.R_force, g.R_area};
+      for (int k = 0; k < 9; k++) {
+        int e;
+        frexp(v[1 + k], &e);
+        if (v[1 + k] > 0.0) worst[k] = fmax(worst[k], fabs(got[k] - v[1 + k]) / ldexp(1.0, e - 53));
+      }
+      rows++;
+    }
+    fclose(f);
+    printf("dc_hertz_geometry vs mpmath (%d ratios in [1e-12, 1]), worst ulp:", rows);
+    for (int k = 0; k < 9; k++) printf(" %s %.0f", names[k], worst[k]);
+    printf("\n");
+  }
   return 0;
 }

@@ -61,11 +61,10 @@ typedef struct {
 } dc_hertz_state;
 
 /* e^2 solving the exact relation (Eq. 13) for r = R_minor/R_major in
-   [DC_HERTZ_RATIO_MIN, 1], from Chebyshev fits of its solution to rounding
-   (generated with mpmath: tests/reference/gen_hertz_eccentricity_cheb.py);
-   returns m1 = 1 - e^2 too, which keeps full relative precision when
-   e^2 -> 1 (e^2 itself is as precise as 1 - r as r -> 1). DC_EDOM outside
-   the domain. */
+   [DC_HERTZ_RATIO_MIN, 1], from lane 0 of the polynomials of
+   dc_hertz_geometry; returns m1 = 1 - e^2 too, which keeps full relative
+   precision when e^2 -> 1 (e^2 itself is as precise as 1 - r as r -> 1).
+   DC_EDOM outside the domain. */
 int dc_hertz_eccentricity(double ratio, double *e2, double *m1);
 
 /* e^2 from the closed-form approximation (review Eq. 14), same domain. */
@@ -74,7 +73,12 @@ int dc_hertz_eccentricity_approx(double ratio, double *e2);
 /* Geometry factors from the two relative principal radii (either order).
    Domain: radii > 0 and finite, ratio >= DC_HERTZ_RATIO_MIN (else
    DC_EDOM). Rc, R_force and R_area are at most R_major and are computed
-   without intermediate overflow or underflow over the whole domain. */
+   without intermediate overflow or underflow over the whole domain.
+   Every output comes from one evaluation of piecewise polynomials in
+   ln(R_minor/R_major), fitted to Eqs. 11-13 with mpmath
+   (tests/reference/gen_hertz_geometry_poly.py), in about 45 ns: e2, m1,
+   K, E, D, gamma, beta, R_force and R_area within 2.1 ulp of the exact
+   values over the whole ratio range (tests/unit/test_hertz_elliptic.c). */
 int dc_hertz_geometry(double R1, double R2, dc_hertz_geom *g);
 
 /* dc_hertz_geometry(R, R, g) for a circular contact, without its checks
