@@ -33,6 +33,7 @@ Run: python3 gen_hertz_geometry_poly.py   (seconds)"""
 import os
 from multiprocessing import Pool
 import mpmath as mp
+from poly14_fit import estrin_rest, power_coefficients
 
 mp.mp.dps = 34
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -110,50 +111,15 @@ def head26(v):
     return float(mp.ldexp(mp.nint(mp.ldexp(m, 26)), e - 26))
 
 
-def estrin(c, x):
-    """The C code's order in double arithmetic (Python floats): c = (c0 head,
-    c0 rest, c1, ..., c14); head + s, s = rest + x P(x), P = c1 + ... +
-    c14 x^13 by Estrin's scheme, so that the only rounding at full size is
-    the last addition. Returns (head + s, s)."""
-    x2 = x * x
-    x4 = x2 * x2
-    x8 = x4 * x4
-    d = c[2:]
-    a = [d[2 * i] + d[2 * i + 1] * x for i in range(7)]
-    b = [a[0] + a[1] * x2, a[2] + a[3] * x2, a[4] + a[5] * x2]
-    P = (b[0] + b[1] * x4) + (b[2] + a[6] * x4) * x8
-    s = c[1] + x * P
-    return c[0] + s, s
-
-
 def fit_piece(piece):
     lo, hi, tc, top = piece
     lo, hi, tc = mp.mpf(lo), mp.mpf(hi), mp.mpf(tc)
     n = DEG
-    mid, h = (lo + hi) / 2, (hi - lo) / 2
-    nodes = [mp.cos(mp.pi * (k + mp.mpf(1) / 2) / (n + 1)) for k in range(n + 1)]
-    vals = [lanes(mid + h * y, top) for y in nodes]
-    coefs = []   # coefs[j][lane], powers of x = t - tc
     per_lane = []
-    for L in range(NLANES):
-        a = [2 * sum(v[L] * mp.cos(mp.pi * j * (k + mp.mpf(1) / 2) / (n + 1)) for k, v in enumerate(vals)) / (n + 1)
-             for j in range(n + 1)]
-        a[0] /= 2
-        # Chebyshev series in y -> powers of y -> powers of x, y = (x + tc - mid)/h
-        Tm = [[mp.mpf(1)], [mp.mpf(0), mp.mpf(1)]]
-        for j in range(2, n + 1):
-            Tm.append([(2 * Tm[j - 1][i - 1] if i >= 1 else 0) - (Tm[j - 2][i] if i < len(Tm[j - 2]) else 0)
-                       for i in range(j + 1)])
-        py = [sum(a[j] * Tm[j][i] for j in range(i, n + 1) if i < len(Tm[j])) for i in range(n + 1)]
-        s = tc - mid
-        px = [mp.mpf(0)] * (n + 1)
-        for i, bi in enumerate(py):   # bi ((x + s)/h)^i
-            for k in range(i + 1):
-                px[k] += bi * mp.binomial(i, k) * s ** (i - k) / h ** i
+    for px in power_coefficients(lambda t: lanes(t, top), lo, hi, n, tc):   # powers of x = t - tc
         hi0 = head26(px[0])
         per_lane.append([hi0, float(px[0] - hi0)] + [float(v) for v in px[1:]])
-    for j in range(n + 2):
-        coefs.append([per_lane[L][j] for L in range(NLANES)])
+    coefs = [[per_lane[L][j] for L in range(NLANES)] for j in range(n + 2)]
     # check in double arithmetic against mpmath
     worst = [0.0] * (NLANES + 1)
     for k in range(NCHECK + 1):
@@ -163,7 +129,8 @@ def fit_piece(piece):
         x = t - float(tc)
         exact = lanes(mp.mpf(t), top)
         for L in range(NLANES):
-            got, sl = estrin(per_lane[L], x)
+            sl = estrin_rest(per_lane[L], x)
+            got = per_lane[L][0] + sl
             worst[L] = max(worst[L], float(abs(got / exact[L] - 1)))
             if L == 6:
                 worst[NLANES] = max(worst[NLANES], abs(sl / per_lane[L][0]))

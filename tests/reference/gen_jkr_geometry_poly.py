@@ -41,6 +41,7 @@ Run: python3 gen_jkr_geometry_poly.py   (a few minutes on 2 cores)"""
 import os
 from multiprocessing import Pool
 import mpmath as mp
+from poly14_fit import estrin, power_coefficients
 
 mp.mp.dps = 40
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -146,18 +147,6 @@ def geometry(t):
     return lanes, (mH, mb, mpl)
 
 
-def estrin(c, x):
-    """dc_poly14's order in double arithmetic: head + (rest + x P(x))."""
-    x2 = x * x
-    x4 = x2 * x2
-    x8 = x4 * x4
-    d = c[2:]
-    a = [d[2 * i] + d[2 * i + 1] * x for i in range(7)]
-    b = [a[0] + a[1] * x2, a[2] + a[3] * x2, a[4] + a[5] * x2]
-    P = (b[0] + b[1] * x4) + (b[2] + a[6] * x4) * x8
-    return c[0] + (c[1] + x * P)
-
-
 def lanes_at(t):
     return geometry(t)[0]
 
@@ -165,19 +154,9 @@ def lanes_at(t):
 def fit_piece(p):
     n = DEG
     a, b = -mp.mpf(p + 1), -mp.mpf(p)
-    mid, h = (a + b) / 2, (b - a) / 2
-    nodes = [mp.cos(mp.pi * (k + mp.mpf(1) / 2) / (n + 1)) for k in range(n + 1)]
-    vals = [lanes_at(mid + h * y) for y in nodes]
+    mid = (a + b) / 2
     per_lane = []
-    for L in range(len(NAMES)):
-        ch = [2 * sum(v[L] * mp.cos(mp.pi * j * (k + mp.mpf(1) / 2) / (n + 1)) for k, v in enumerate(vals)) / (n + 1)
-              for j in range(n + 1)]
-        ch[0] /= 2
-        T = [[mp.mpf(1)], [mp.mpf(0), mp.mpf(1)]]
-        for j in range(2, n + 1):
-            T.append([(2 * T[j - 1][i - 1] if i >= 1 else 0) - (T[j - 2][i] if i < len(T[j - 2]) else 0)
-                      for i in range(j + 1)])
-        px = [sum(ch[j] * T[j][i] for j in range(i, n + 1) if i < len(T[j])) / h ** i for i in range(n + 1)]
+    for px in power_coefficients(lanes_at, a, b, n, mid):   # powers of x = t - mid
         head = float(px[0])
         per_lane.append([head, float(px[0] - head)] + [float(v) for v in px[1:]])
     worst = [0.0] * len(NAMES)

@@ -37,6 +37,7 @@ into the header.
 Writes c_core/src/jkr_sphere_poly.h. Run: python3 gen_jkr_sphere_poly.py"""
 import os
 import mpmath as mp
+from poly14_fit import estrin, estrin_rest, power_coefficients
 
 mp.mp.dps = 40
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -122,55 +123,19 @@ def lanes_s(s):
     return [y / s]
 
 
-def estrin(c, x):
-    """The C code's order in double arithmetic: c = (head, rest, c1, ...,
-    c14); head + (rest + x P(x)), P by Estrin's scheme."""
-    x2 = x * x
-    x4 = x2 * x2
-    x8 = x4 * x4
-    d = c[2:]
-    a = [d[2 * i] + d[2 * i + 1] * x for i in range(7)]
-    b = [a[0] + a[1] * x2, a[2] + a[3] * x2, a[4] + a[5] * x2]
-    P = (b[0] + b[1] * x4) + (b[2] + a[6] * x4) * x8
-    return c[0] + (c[1] + x * P)
-
-
-def estrin_rest(c, x):
-    """The part of estrin() added to the head: rest + x P(x)."""
-    x2 = x * x
-    x4 = x2 * x2
-    x8 = x4 * x4
-    d = c[2:]
-    a = [d[2 * i] + d[2 * i + 1] * x for i in range(7)]
-    b = [a[0] + a[1] * x2, a[2] + a[3] * x2, a[4] + a[5] * x2]
-    P = (b[0] + b[1] * x4) + (b[2] + a[6] * x4) * x8
-    return c[1] + x * P
-
-
 def fit(fn, edges, psi_check=False):
     """[(centre, coefs[row][lane])] on the pieces between the edges, and
     the worst relative error per lane (and of psi = A + kappa B)."""
     out, worst = [], None
     n = DEG
-    nodes = [mp.cos(mp.pi * (k + mp.mpf(1) / 2) / (n + 1)) for k in range(n + 1)]
     for p in range(len(edges) - 1):
         a, b = mp.mpf(edges[p]), mp.mpf(edges[p + 1])
-        mid, h = (a + b) / 2, (b - a) / 2
-        vals = [fn(mid + h * y) for y in nodes]
-        nl = len(vals[0])
+        mid = (a + b) / 2
         per_lane = []
-        for L in range(nl):
-            ch = [2 * sum(v[L] * mp.cos(mp.pi * j * (k + mp.mpf(1) / 2) / (n + 1)) for k, v in enumerate(vals)) / (n + 1)
-                  for j in range(n + 1)]
-            ch[0] /= 2
-            # Chebyshev series in y = x/h -> powers of x
-            T = [[mp.mpf(1)], [mp.mpf(0), mp.mpf(1)]]
-            for j in range(2, n + 1):
-                T.append([(2 * T[j - 1][i - 1] if i >= 1 else 0) - (T[j - 2][i] if i < len(T[j - 2]) else 0)
-                          for i in range(j + 1)])
-            px = [sum(ch[j] * T[j][i] for j in range(i, n + 1) if i < len(T[j])) / h ** i for i in range(n + 1)]
+        for px in power_coefficients(fn, a, b, n, mid):   # powers of x = t - mid
             head = float(px[0])
             per_lane.append([head, float(px[0] - head)] + [float(v) for v in px[1:]])
+        nl = len(per_lane)
         if worst is None:
             worst = [0.0] * (nl + 1)
         for k in range(NCHECK + 1):
