@@ -68,6 +68,24 @@ static void curvature_form_scaled(const double grad[3], const double hess[9], co
 int dc_curvature_form(const double grad[3], const double hess[9],
                       const double u[3], const double v[3], double out[3])
 {
+  /* common case first: |grad f|^2 normal and finite (so is grad), u and v
+     finite, a finite form. A non-finite entry of hess cannot give one (it
+     reaches every form entry through a product, inf * 0 = NaN), so the
+     full checks below are needed only when this path fails */
+  const double g2f = dot(grad, grad);
+  if (g2f >= DBL_MIN && g2f <= DBL_MAX) {
+    double Hu[3], Hv[3];
+    matvec(hess, u, Hu);
+    matvec(hess, v, Hv);
+    const double inv_g = 1.0 / sqrt(g2f);
+    const double f0 = dot(u, Hu) * inv_g, f1 = 0.5 * (dot(u, Hv) + dot(v, Hu)) * inv_g, f2 = dot(v, Hv) * inv_g;
+    if (isfinite(f0) && isfinite(f1) && isfinite(f2) && all_finite(u, 3) && all_finite(v, 3)) {
+      out[0] = f0;
+      out[1] = f1;
+      out[2] = f2;
+      return DC_OK;
+    }
+  }
   if (!(all_finite(grad, 3) && all_finite(hess, 9) && all_finite(u, 3) && all_finite(v, 3))) return DC_EDOM;
   if (grad[0] == 0.0 && grad[1] == 0.0 && grad[2] == 0.0) return DC_EDOM;
   const double g2 = dot(grad, grad);

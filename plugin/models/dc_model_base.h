@@ -27,6 +27,19 @@
      maxRadiusFactor X           superquadrics: cap on each relative principal
                                  radius, X times the volume-equivalent effective
                                  radius, X in (1, 1e12] (default 100)
+     curvatureTolerance T        superquadrics: reuse a contact's relative radii
+                                 and Hertz geometry across steps while the bodies'
+                                 contact points and relative orientation stay put
+                                 (superquadric_curvature.h has the rule); T in
+                                 [0, 0.1], the aimed relative change of the radii
+                                 (default 0: recomputed every step, exact; pays
+                                 off in lasting contacts: settled beds, slow flow)
+     curvatureCheck X            superquadrics, to test the reuse: the geometry is
+                                 also recomputed every step; stops the run when a
+                                 reused R_force, R_area, R_major or R_minor is off
+                                 by more than X relative, X in [0, 1] (default 0:
+                                 no check); prints the count and the largest
+                                 deviation at exit
      contactPatch on|off         store the contact patch in history values, for
                                  compute pair/gran/local ... history (default off;
                                  on by itself when a sub-model reads the patch) */
@@ -34,6 +47,7 @@
 #define DC_PLUGIN_DC_MODEL_BASE_H
 
 #include <cfloat>
+#include <cstring>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -41,6 +55,7 @@
 #include "contact_frame.h"
 #include "contact_models.h"
 #include "contact_patch.h"
+#include "comm.h"
 #include "error.h"
 #include "force.h"
 #include "global_properties.h"
@@ -59,14 +74,14 @@ namespace ContactModels {
 
 class DcNormalModel : public NormalModelBase {
 public:
-  enum { NO_LIMIT_FORCE = 1 };  /* settings a model does not take */
+  enum { NO_LIMIT_FORCE = 1, NO_CURVATURE_REUSE = 2 };  /* settings a model does not take */
 
   DcNormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, ContactModelBase *c, const char *name,
                 int unsupported = 0) :
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
-    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), name_(name), unsupported_(unsupported),
-    hertzRangeWarned_(false)
+    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
+    curvatureCheck(0.0), name_(name), unsupported_(unsupported), hertzRangeWarned_(false), checkMax_(0.0), checked_(0), refreshed_(0), over_()
   {}
 
   void registerSettings(Settings &settings)
@@ -80,14 +95,29 @@ public:
     settings.registerChoice("damping", dampingLaw, names, laws, 5, "restitution");
     settings.registerOnOff("contactPatch", contactPatch, false);
     settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
+    settings.registerDoubleSetting("curvatureTolerance", curvatureTolerance, 0.0);
+    settings.registerDoubleSetting("curvatureCheck", curvatureCheck, 0.0);
+  }
+
+  ~DcNormalModel()
+  {
+    if (checked_ && screen)
+      fprintf(screen, "Normal model %s: curvature reused %ld times, computed %ld times; largest relative deviation "
+              "%.3e, above curvatureTolerance on %ld, above 10 times it on %ld (rank %d)\n", name_, checked_, refreshed_,
+              checkMax_, over_[0], over_[1], comm->me);
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     if ((unsupported_ & NO_LIMIT_FORCE) && limitForce)
       stop(true, "'limitForce on' is not available: the model's normal force is tensile by design");
+    if (!(curvatureTolerance >= 0.0 && curvatureTolerance <= 0.1)) stop(true, "curvatureTolerance must be in [0, 0.1]");
+    if ((unsupported_ & NO_CURVATURE_REUSE) && curvatureTolerance > 0.0)
+      stop(true, "curvatureTolerance is not available: the model recomputes its geometry every step");
+    if (!(curvatureCheck >= 0.0 && curvatureCheck <= 1.0)) stop(true, "curvatureCheck must be in [0, 1]");
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     curvature.setup(lmp, c, maxRadiusFactor, name_);
+    curvature.setupCache(hsetup, curvatureTolerance, sizeof(dc_hertz_geom) / sizeof(double));
 #else
     if (!(maxRadiusFactor > 1.0 && maxRadiusFactor <= 1e12)) stop(true, "maxRadiusFactor must be in (1, 1e12]");
 #endif
@@ -220,6 +250,47 @@ protected:
     if (axis) axis[0] = axis[1] = axis[2] = 0.0;
   }
 
+  /* The Hertz geometry of a superquadric contact's relative radii and, when
+     axis is given, the major-axis direction; reused across steps within
+     curvatureTolerance. */
+  void superquadricGeometry(SurfacesIntersectData &sidata, dc_hertz_geom &g, double *axis)
+  {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    const bool cache = curvature.caching();
+    const double *kept = NULL;
+    dc_hertz_geom old;
+    int held = -1;
+    if (cache) {
+      held = curvature.reuse(lmp, sidata, axis, &kept);
+      if (held >= 0) memcpy(&old, kept, sizeof old);
+      if (held == 1) {
+        g = old;
+        if (curvatureCheck > 0.0) checkReuse(sidata, g);
+        return;
+      }
+    }
+#endif
+    double R_major, R_minor;
+    relativeRadii(sidata, R_major, R_minor, axis);
+    hertzGeometry(R_major, R_minor, g);
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (cache && sidata.computeflag && sidata.shearupdate) {
+      refreshed_++;
+      curvature.keep(lmp, sidata, reinterpret_cast<const double *>(&g), axis, held == 0 ? geometryChange(old, g) : -1.0);
+    }
+#endif
+  }
+
+  /* The largest relative change of the radii a model uses, a to b. */
+  static double geometryChange(const dc_hertz_geom &a, const dc_hertz_geom &b)
+  {
+    const double x[4] = {a.R_force / b.R_force, a.R_area / b.R_area, a.R_major / b.R_major, a.R_minor / b.R_minor};
+    double c = 0.0;
+    for (int k = 0; k < 4; k++)
+      if (fabs(x[k] - 1.0) > c) c = fabs(x[k] - 1.0);
+    return c;
+  }
+
   /* dc_hertz_geometry, or a run-stopping message naming the radii. */
   void hertzGeometry(double R1, double R2, dc_hertz_geom &g)
   {
@@ -332,7 +403,7 @@ protected:
   int dampingLaw;                  /* dc_damping_law */
   std::vector<double> dampCoef;    /* its coefficient per type pair */
   int ntypes_;
-  double maxRadiusFactor;
+  double maxRadiusFactor, curvatureTolerance, curvatureCheck;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
 #endif
@@ -351,9 +422,35 @@ private:
     return MODEL_PARAMS::createPerTypePairProperty(registry, "viscoelasticTime", caller, sanity_checks, 0.0);
   }
 
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  /* curvatureCheck: the reused geometry g against this step's */
+  void checkReuse(const SurfacesIntersectData &sidata, const dc_hertz_geom &g)
+  {
+    double R_major, R_minor;
+    dc_hertz_geom f;
+    curvature.relativeRadii(lmp, sidata, R_major, R_minor, name_, NULL);
+    hertzGeometry(R_major, R_minor, f);
+    const double dev = geometryChange(g, f);
+    if (dev > checkMax_) checkMax_ = dev;
+    if (dev > curvatureTolerance) over_[0]++;
+    if (dev > 10.0 * curvatureTolerance) over_[1]++;
+    checked_++;
+    if (checkMax_ > curvatureCheck) {
+      char msg[320];
+      snprintf(msg, sizeof msg, "curvatureCheck: the reused geometry of the contact of atom %d with %s %d is off by "
+               "%.3e (> %g): R_force %g against %g, R_minor %g against %g", (int)atom->tag[sidata.i],
+               sidata.is_wall ? "wall type" : "atom", sidata.is_wall ? sidata.jtype : (int)atom->tag[sidata.j],
+               checkMax_, curvatureCheck, g.R_force, f.R_force, g.R_minor, f.R_minor);
+      stop(false, msg);
+    }
+  }
+#endif
+
   const char *name_;
   int unsupported_;
   bool hertzRangeWarned_;
+  double checkMax_;   /* curvatureCheck: the largest deviation seen, on how many reuses, refreshes */
+  long checked_, refreshed_, over_[2];   /* over_: deviations above t, 10 t */
   ContactPatchWriter patch;
 };
 

@@ -53,7 +53,7 @@ class NormalModel<NORMAL_CLASSICAL> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    DcNormalModel(lmp, hsetup, c, "classical"), law(DC_CLASSICAL_LSD), stiffness(DC_CLASSICAL_K_ENERGY),
+    DcNormalModel(lmp, hsetup, c, "classical", NO_CURVATURE_REUSE), law(DC_CLASSICAL_LSD), stiffness(DC_CLASSICAL_K_ENERGY),
     history_offset(-1), ntypes(0)
   {}
 

@@ -186,9 +186,7 @@ private:
     dc_hertz_geom g;
     g.R_force = g.R_area = reff;
     if (sq) {
-      double R_major, R_minor;
-      relativeRadii(sidata, R_major, R_minor, ax);
-      hertzGeometry(R_major, R_minor, g);
+      superquadricGeometry(sidata, g, ax);
       reff = g.Rc;
     } else if (gwElliptic && sigma != 0.0) {
       /* the circle's geometry, kept per type pair while reff repeats */

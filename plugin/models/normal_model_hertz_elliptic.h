@@ -45,9 +45,7 @@ public:
     const bool sq = superquadric(sidata);
     dc_hertz_geom g;
     if (sq) {
-      double R_major, R_minor;
-      relativeRadii(sidata, R_major, R_minor, ax);
-      hertzGeometry(R_major, R_minor, g);
+      superquadricGeometry(sidata, g, ax);
       r_force = g.R_force;
       r_area = g.R_area;
       checkHertzRange(sidata, 2.0 * g.R_major * deltan * g.D / g.K, g.R_minor);   /* a^2 = 2 R_major delta D / K */

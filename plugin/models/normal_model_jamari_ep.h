@@ -76,8 +76,15 @@ public:
     const double Y = Yeff[itype][jtype];
     double R_major, R_minor, axis[3];
     double *ax = axisWanted(axis);
-    relativeRadii(sidata, R_major, R_minor, ax);
     const bool sq = superquadric(sidata);
+    dc_hertz_geom g;
+    if (sq) {
+      superquadricGeometry(sidata, g, ax);
+      R_major = g.R_major;
+      R_minor = g.R_minor;
+    } else {
+      relativeRadii(sidata, R_major, R_minor, ax);
+    }
     const int k = itype * (ntypes + 1) + jtype;
     dc_jamari_state *h = reinterpret_cast<dc_jamari_state *>(&sidata.contact_history[history_offset]);
     if (!sq && h->delta_max == 0.0 && sidata.deltan <= yield_ratio[k] * R_major) {
@@ -96,9 +103,7 @@ public:
       }
       return;
     }
-    dc_hertz_geom g;
-    if (sq) hertzGeometry(R_major, R_minor, g);
-    else dc_hertz_geometry_circle(R_major, &g);
+    if (!sq) dc_hertz_geometry_circle(R_major, &g);
     dc_jamari_state scratch;
     if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
       scratch = *h;

@@ -48,7 +48,7 @@ class NormalModel<JKR_ELLIPTIC> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    DcNormalModel(lmp, hsetup, c, "jkr_elliptic", NO_LIMIT_FORCE), work(NULL), hint_offset(-1)
+    DcNormalModel(lmp, hsetup, c, "jkr_elliptic", NO_LIMIT_FORCE | NO_CURVATURE_REUSE), work(NULL), hint_offset(-1)
   {
     /* the solver hint (fields 1-3) only where elliptic contacts occur */
     const int nfields = atom->superquadric_flag ? DC_JKR_HISTORY_NFIELDS : 1;

@@ -10,10 +10,12 @@
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
 
 #include <cmath>
+#include <cstring>
 #include "atom.h"
 #include "contact_interface.h"
 #include "contact_models.h"
 #include "error.h"
+#include "math_extra.h"
 #include "math_extra_liggghts_nonspherical.h"
 #include "superquadric.h"
 #include "dc/curvature.h"
@@ -23,7 +25,8 @@ namespace ContactModels {
 
 class SuperquadricCurvature {
 public:
-  SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0), kind_("Normal model") {}
+  SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0), kind_("Normal model"),
+    cache_offset_(-1), payload_(0), tol_(0.0), motion_(0.0), fresh_(-1), capped_(false) {}
 
   /* Call from postSettings. `model` names the normal model in messages.
      Checks the maxRadiusFactor setting's range on every run. */
@@ -45,6 +48,111 @@ public:
     max_radius_factor_ = max_radius_factor;
   }
 
+  /* Reuse of a contact's curvature across steps (setting
+     curvatureTolerance t > 0): the relative radii and what a model derives
+     from them alone (payload doubles, a dc_hertz_geom) are kept in the
+     contact history with the state they were computed at: each body's
+     contact point in its own frame and the bodies' relative orientation.
+     The motion since then, m = max(|dp_i| / a_i, |dp_j| / a_j, turn [rad])
+     (a: a body's smallest semi-axis; plane and mesh walls: the particle's
+     point only), is checked every step against an allowance; past it the
+     payload is recomputed. The allowance is the smaller of t R_minor / a
+     (a point moves by at most t R_minor) and, from the relative change c
+     found at the last recomputation after a motion m, m t / (2 c) (the
+     change at the rate just seen stays near t / 2); at most twice the last
+     allowance and 0.02, and 1/50 of the first bound while maxRadiusFactor
+     caps R_major (a flat face, whose small curvature changes fastest).
+     Call from postSettings, after setup. */
+  void setupCache(IContactHistorySetup *hsetup, double tolerance, int payload)
+  {
+    tol_ = tolerance;
+    if (!(tolerance > 0.0) || alpha_i_offset_ < 0) return;
+    payload_ = payload;
+    for (int k = 0; k < CACHE_HEAD + 3 + payload; k++) {
+      const int off = hsetup->add_history_value("curvature_cache", "0");
+      if (k == 0) cache_offset_ = off;
+    }
+  }
+  bool caching() const { return cache_offset_ >= 0; }
+
+  /* 1: the kept payload of this contact holds (*kept; with axis: the major
+     axis, carried along with body i); 0: it no longer holds (*kept: the old
+     payload, to measure the change against); -1: none kept. Unless 1, the
+     caller computes the payload and hands it to keep(). */
+  int reuse(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &sidata, double *axis, const double **kept)
+  {
+    LAMMPS_NS::Atom *atom = lmp->atom;
+    const double *h = &sidata.contact_history[cache_offset_];
+    double pi[3], pj[3];
+    contactPoints(sidata, pi, pj);
+    const int i = sidata.i;
+    double *s = probe_;   /* [0] tag of i, [1..3] point of i, [4..6] of j, [7..10] relative orientation */
+    s[0] = (double)atom->tag[i];
+    toBody(atom, i, pi, s + 1);
+    if (sidata.is_wall) {
+      s[4] = s[5] = s[6] = s[7] = s[8] = s[9] = s[10] = 0.0;
+    } else {
+      toBody(atom, sidata.j, pj, s + 4);
+      double qc[4];
+      MathExtra::qconjugate(atom->quaternion[i], qc);
+      MathExtra::quatquat(qc, atom->quaternion[sidata.j], s + 7);
+    }
+    *kept = h + CACHE_HEAD + 3;
+    if (h[0] != s[0]) return fresh_ = -1;
+    /* m^2, the turn from its quaternion: theta^2 ~ 8 (1 - |cos theta/2|) */
+    const double ai = minAxis(atom, i);
+    double m2 = dist2(h + 1, s + 1) / (ai * ai);
+    if (!sidata.is_wall) {
+      const double aj = minAxis(atom, sidata.j);
+      const double mj = dist2(h + 4, s + 4) / (aj * aj);
+      const double dot = h[7] * s[7] + h[8] * s[8] + h[9] * s[9] + h[10] * s[10];
+      const double mt = 8.0 * (1.0 - fabs(dot));
+      if (mj > m2) m2 = mj;
+      if (mt > m2) m2 = mt;
+    }
+    if (m2 > h[ALLOW] * h[ALLOW]) {
+      motion_ = sqrt(m2);
+      return fresh_ = 0;
+    }
+    if (axis) {
+      double w[3];
+      MathExtraLiggghtsNonspherical::rotate_local2global(atom->quaternion[i], h + CACHE_HEAD, w);
+      const double *n = sidata.en;
+      const double wn = w[0] * n[0] + w[1] * n[1] + w[2] * n[2];
+      for (int k = 0; k < 3; k++) w[k] -= wn * n[k];
+      const double len = sqrt(w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+      for (int k = 0; k < 3; k++) axis[k] = len > 0.0 ? w[k] / len : 0.0;
+    }
+    return fresh_ = 1;
+  }
+
+  /* Stores the payload computed at this step's state (after reuse returned
+     0 or -1), with change, its largest relative change against the old
+     payload (reuse 0); axis (the world major axis, or NULL) is kept in body
+     i's frame. */
+  void keep(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &sidata, const double *payload, const double *axis,
+            double change)
+  {
+    if (fresh_ == 1) return;
+    double *h = &sidata.contact_history[cache_offset_];
+    /* each body's point moves by at most t R_minor (R_minor first in the
+       payload, after R_major: a dc_hertz_geom) */
+    const double a = sidata.is_wall ? minAxis(lmp->atom, sidata.i)
+                                    : fmax(minAxis(lmp->atom, sidata.i), minAxis(lmp->atom, sidata.j));
+    double allow = tol_ * payload[1] / a;
+    if (capped_) {
+      allow *= 0.02;
+    } else if (fresh_ == 0) {
+      const double adapt = change > 0.0 ? 0.5 * tol_ * motion_ / change : HUGE_VAL;
+      allow = fmin(allow, fmin(2.0 * h[ALLOW], adapt));
+    }
+    if (allow > 0.02) allow = 0.02;
+    memcpy(h, probe_, sizeof probe_);
+    h[ALLOW] = allow;
+    if (axis) MathExtraLiggghtsNonspherical::rotate_global2local(lmp->atom->quaternion[sidata.i], axis, h + CACHE_HEAD);
+    memcpy(h + CACHE_HEAD + 3, payload, payload_ * sizeof(double));
+  }
+
   /* Relative principal radii R_major >= R_minor at this contact. Each
      relative principal radius is capped at maxRadiusFactor times the
      volume-equivalent effective radius (flat superquadric faces have zero
@@ -56,22 +164,10 @@ public:
     LAMMPS_NS::Atom *atom = lmp->atom;
     double u[3], v[3], form[3], form_j[3];
     dc_tangent_basis(sidata.en, u, v);
-    if (sidata.is_wall) {
-      /* primitive walls hand over the particle's deepest point; mesh walls
-         its projection on the triangle, deltan from it along -en */
-      double p[3];
-      const double back = sidata.mesh ? sidata.deltan : 0.0;
-      for (int k = 0; k < 3; k++) p[k] = sidata.contact_point[k] - back * sidata.en[k];
-      bodyForm(atom, sidata.i, p, u, v, form, lmp, model);
-    } else {
-      const double ai = sidata.contact_history[alpha_i_offset_];
-      const double aj = sidata.contact_history[alpha_j_offset_];
-      double pi[3], pj[3];
-      for (int k = 0; k < 3; k++) {
-        pi[k] = sidata.contact_point[k] - ai * sidata.en[k];
-        pj[k] = sidata.contact_point[k] + aj * sidata.en[k];
-      }
-      bodyForm(atom, sidata.i, pi, u, v, form, lmp, model);
+    double pi[3], pj[3];
+    contactPoints(sidata, pi, pj);
+    bodyForm(atom, sidata.i, pi, u, v, form, lmp, model);
+    if (!sidata.is_wall) {
       bodyForm(atom, sidata.j, pj, u, v, form_j, lmp, model);
       form[0] += form_j[0]; form[1] += form_j[1]; form[2] += form_j[2];
     }
@@ -82,6 +178,7 @@ public:
     const double k_min = 1.0 / (max_radius_factor_ * reff);
     R_minor = 1.0 / (k1 > k_min ? k1 : k_min);
     R_major = 1.0 / (k2 > k_min ? k2 : k_min);
+    capped_ = k2 <= k_min;
   }
 
   /* For the rolling kinematics (rolling_contact.h): the history offsets of
@@ -104,17 +201,7 @@ public:
     LAMMPS_NS::Atom *atom = lmp->atom;
     double u[3], v[3], form[3], pi[3], pj[3];
     dc_tangent_basis(sidata.en, u, v);
-    if (sidata.is_wall) {
-      const double back = sidata.mesh ? sidata.deltan : 0.0;
-      for (int k = 0; k < 3; k++) pi[k] = sidata.contact_point[k] - back * sidata.en[k];
-    } else {
-      const double ai = sidata.contact_history[alpha_i_offset_];
-      const double aj = sidata.contact_history[alpha_j_offset_];
-      for (int k = 0; k < 3; k++) {
-        pi[k] = sidata.contact_point[k] - ai * sidata.en[k];
-        pj[k] = sidata.contact_point[k] + aj * sidata.en[k];
-      }
-    }
+    contactPoints(sidata, pi, pj);
     for (int b = 0; b < 2; b++) {
       if (b == 1 && sidata.is_wall) {
         k1[1] = k2[1] = 0.0;
@@ -130,6 +217,43 @@ public:
   }
 
 private:
+  enum { ALLOW = 11, CACHE_HEAD = 12 };   /* tag, two points, relative orientation, allowance */
+
+  /* Each body's point of the contact (a wall: the particle's only):
+     primitive walls hand over the particle's deepest point; mesh walls its
+     projection on the triangle, deltan from it along -en. */
+  void contactPoints(const SurfacesIntersectData &sidata, double *pi, double *pj) const
+  {
+    if (sidata.is_wall) {
+      const double back = sidata.mesh ? sidata.deltan : 0.0;
+      for (int k = 0; k < 3; k++) pi[k] = sidata.contact_point[k] - back * sidata.en[k];
+      return;
+    }
+    const double ai = sidata.contact_history[alpha_i_offset_];
+    const double aj = sidata.contact_history[alpha_j_offset_];
+    for (int k = 0; k < 3; k++) {
+      pi[k] = sidata.contact_point[k] - ai * sidata.en[k];
+      pj[k] = sidata.contact_point[k] + aj * sidata.en[k];
+    }
+  }
+
+  static void toBody(LAMMPS_NS::Atom *atom, int i, const double *p, double *out)
+  {
+    const double d[3] = {p[0] - atom->x[i][0], p[1] - atom->x[i][1], p[2] - atom->x[i][2]};
+    MathExtraLiggghtsNonspherical::rotate_global2local(atom->quaternion[i], d, out);
+  }
+  static double minAxis(LAMMPS_NS::Atom *atom, int i)
+  {
+    const double *a = atom->shape[i];
+    const double m = a[0] < a[1] ? a[0] : a[1];
+    return m < a[2] ? m : a[2];
+  }
+  static double dist2(const double *a, const double *b)
+  {
+    const double d0 = a[0] - b[0], d1 = a[1] - b[1], d2 = a[2] - b[2];
+    return d0 * d0 + d1 * d1 + d2 * d2;
+  }
+
   void bodyForm(LAMMPS_NS::Atom *atom, int i, const double *p, const double *u, const double *v,
                 double *form, LAMMPS_NS::LAMMPS *lmp, const char *model)
   {
@@ -160,6 +284,12 @@ private:
   int alpha_i_offset_, alpha_j_offset_;
   double max_radius_factor_;
   const char *kind_;   /* "Normal model" or "Rolling model", in messages */
+  int cache_offset_, payload_;
+  double tol_;
+  double probe_[ALLOW];   /* this step's state and motion, from reuse() to keep() */
+  double motion_;
+  int fresh_;           /* what reuse() returned */
+  bool capped_;         /* the last relativeRadii capped R_major */
 };
 
 }
