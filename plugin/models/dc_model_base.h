@@ -101,10 +101,12 @@ public:
 
   ~DcNormalModel()
   {
-    if (checked_ && screen)
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (curvatureCheck > 0.0 && curvature.caching() && screen)
       fprintf(screen, "Normal model %s: curvature reused %ld times, computed %ld times; largest relative deviation "
               "%.3e, above curvatureTolerance on %ld, above 10 times it on %ld (rank %d)\n", name_, checked_, refreshed_,
               checkMax_, over_[0], over_[1], comm->me);
+#endif
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
