@@ -111,6 +111,70 @@ int dc_curvature_form(const double grad[3], const double hess[9],
   return DC_OK;
 }
 
+/* |x|^k for a small integer k >= 0 */
+static double pow_abs_int(double x, int k)
+{
+  const double a = fabs(x);
+  double r = 1.0;
+  for (int i = 0; i < k; i++) r *= a;
+  return r;
+}
+
+int dc_superquadric_form(const double shape[3], const double blockiness[2], const double p[3],
+                         const double u[3], const double v[3], double out[3])
+{
+  const double n1 = blockiness[0], n2 = blockiness[1];
+  if (!(shape[0] > 0.0 && shape[1] > 0.0 && shape[2] > 0.0 && n1 >= 2.0 && n1 <= 1e3 && n2 >= 2.0 && n2 <= 1e3))
+    return DC_EDOM;
+  const double ia = 1.0 / shape[0], ib = 1.0 / shape[1], ic = 1.0 / shape[2];
+  const double xa = p[0] * ia, yb = p[1] * ib, zc = p[2] * ic;
+  /* |x/a|^(n2-2), |y/b|^(n2-2), |z/c|^(n1-2), then one power higher */
+  double X2, Y2, Z2;
+  const int k1 = (int)n1, k2 = (int)n2;
+  if (k1 == n1 && k2 == n2 && k1 <= 16 && k2 <= 16) {
+    X2 = pow_abs_int(xa, k2 - 2);
+    Y2 = pow_abs_int(yb, k2 - 2);
+    Z2 = pow_abs_int(zc, k1 - 2);
+  } else {
+    X2 = pow(fabs(xa), n2 - 2.0);
+    Y2 = pow(fabs(yb), n2 - 2.0);
+    Z2 = pow(fabs(zc), n1 - 2.0);
+  }
+  const double X1 = X2 * fabs(xa), Y1 = Y2 * fabs(yb), Z1 = Z2 * fabs(zc);
+  /* S = |x/a|^n2 + |y/b|^n2; P1 = S^(n1/n2 - 1), P2 = (n1 - n2) S^(n1/n2 - 2) */
+  double P1 = 1.0, P2 = 0.0;
+  if (n1 != n2) {
+    const double S = X1 * fabs(xa) + Y1 * fabs(yb);
+    const double Sp = pow(S, n1 / n2 - 2.0);
+    P1 = Sp * S;
+    P2 = (n1 - n2) * Sp;
+  }
+  /* grad f and its Hessian (nonzero: xx, yy, zz, xy), both over n1, which
+     cancels in Hessian / |grad f| */
+  const double sx = copysign(X1, xa) * ia, sy = copysign(Y1, yb) * ib;
+  const double g[3] = {sx * P1, sy * P1, copysign(Z1, zc) * ic};
+  const double Hxx = ((n2 - 1.0) * X2 * P1) * ia * ia + P2 * sx * sx;
+  const double Hyy = ((n2 - 1.0) * Y2 * P1) * ib * ib + P2 * sy * sy;
+  const double Hzz = (n1 - 1.0) * Z2 * ic * ic;
+  const double Hxy = P2 * sx * sy;
+  const double g2 = dot(g, g);
+  if (g2 >= DBL_MIN && g2 <= DBL_MAX) {
+    const double inv_g = 1.0 / sqrt(g2);
+    const double f0 = (Hxx * u[0] * u[0] + Hyy * u[1] * u[1] + Hzz * u[2] * u[2] + 2.0 * Hxy * u[0] * u[1]) * inv_g;
+    const double f1 = (Hxx * u[0] * v[0] + Hyy * u[1] * v[1] + Hzz * u[2] * v[2] + Hxy * (u[0] * v[1] + u[1] * v[0])) * inv_g;
+    const double f2 = (Hxx * v[0] * v[0] + Hyy * v[1] * v[1] + Hzz * v[2] * v[2] + 2.0 * Hxy * v[0] * v[1]) * inv_g;
+    if (isfinite(f0) && isfinite(f1) && isfinite(f2) && all_finite(u, 3) && all_finite(v, 3)) {
+      out[0] = f0;
+      out[1] = f1;
+      out[2] = f2;
+      return DC_OK;
+    }
+  }
+  /* the general path decides: rescaling, or the status */
+  const double H[9] = {Hxx, Hxy, 0.0, Hxy, Hyy, 0.0, 0.0, 0.0, Hzz};
+  return dc_curvature_form(g, H, u, v, out);
+}
+
 void dc_form_principal(const double form[3], double *k1, double *k2, double *theta)
 {
   double mean = 0.5 * (form[0] + form[2]);

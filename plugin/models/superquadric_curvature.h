@@ -1,9 +1,10 @@
 /* Relative principal radii of a superquadric contact, for the elliptic
    normal models. Reads the contact point that LIGGGHTS' `surface
-   superquadric` model (or the superquadric wall code) found, evaluates each
-   body's shape-function gradient and Hessian there with LIGGGHTS' own
-   Superquadric class, and hands them to c_core (dc/curvature.h). Plane walls
-   contribute zero curvature. No physics here: only data plumbing. */
+   superquadric` model (or the superquadric wall code) found, takes it and
+   the tangent basis into each body's frame and hands them with the body's
+   shape and blockiness to c_core (dc_superquadric_form, dc/curvature.h: the
+   curvature form of LIGGGHTS' shape function). Plane walls contribute zero
+   curvature. No physics here: only data plumbing. */
 #ifndef DC_PLUGIN_SUPERQUADRIC_CURVATURE_H
 #define DC_PLUGIN_SUPERQUADRIC_CURVATURE_H
 
@@ -17,7 +18,6 @@
 #include "error.h"
 #include "math_extra.h"
 #include "math_extra_liggghts_nonspherical.h"
-#include "superquadric.h"
 #include "dc/curvature.h"
 
 namespace LIGGGHTS {
@@ -257,24 +257,14 @@ private:
   void bodyForm(LAMMPS_NS::Atom *atom, int i, const double *p, const double *u, const double *v,
                 double *form, LAMMPS_NS::LAMMPS *lmp, const char *model)
   {
-    /* the fields shape_function_props_local reads, without Superquadric::set's
-       pow() for koef: koef scales f, grad f and the Hessian alike, so the
-       curvature form Hessian/|grad f| does not depend on it */
-    Superquadric sq;
-    sq.center = atom->x[i];
-    sq.quat = atom->quaternion[i];
-    sq.shape = atom->shape[i];
-    sq.blockiness = atom->blockiness[i];
-    MathExtraLiggghtsNonspherical::quat_to_mat(sq.quat, sq.rotation_matrix);
-    for (int k = 0; k < 3; k++) sq.shape_inv[k] = 1.0 / sq.shape[k];
-    sq.useIntBlockiness = MathExtraLiggghtsNonspherical::isInteger(sq.blockiness[0]) &&
-                          MathExtraLiggghtsNonspherical::isInteger(sq.blockiness[1]);
-    double pl[3], ul[3], vl[3], f, g[3], H[9];
-    sq.global2local(p, pl);
-    MathExtraLiggghtsNonspherical::transpose_matvec(sq.rotation_matrix, u, ul);
-    MathExtraLiggghtsNonspherical::transpose_matvec(sq.rotation_matrix, v, vl);
-    sq.shape_function_props_local(pl, &f, g, H);
-    if (dc_curvature_form(g, H, ul, vl, form) != 0) {
+    /* the contact point and the basis in the body's frame */
+    double R[9], d[3], pl[3], ul[3], vl[3];
+    MathExtraLiggghtsNonspherical::quat_to_mat(atom->quaternion[i], R);
+    for (int k = 0; k < 3; k++) d[k] = p[k] - atom->x[i][k];
+    MathExtraLiggghtsNonspherical::transpose_matvec(R, d, pl);
+    MathExtraLiggghtsNonspherical::transpose_matvec(R, u, ul);
+    MathExtraLiggghtsNonspherical::transpose_matvec(R, v, vl);
+    if (dc_superquadric_form(atom->shape[i], atom->blockiness[i], pl, ul, vl, form) != 0) {
       char msg[256];
       snprintf(msg, sizeof msg, "%s %s: degenerate curvature at the contact point of atom %d (shape-function gradient zero or not finite)", kind_, model, (int)atom->tag[i]);
       lmp->error->one(FLERR, msg);

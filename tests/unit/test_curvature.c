@@ -1,7 +1,10 @@
 /* Principal curvatures of superquadrics and ellipsoids from gradient and
    Hessian against an independent mpmath evaluation (explicit sections,
-   tests/reference/curvature.csv); relative radii: the form sum against
-   review Eqs. 3-4 with the angle, and the sphere and plane cases. */
+   tests/reference/curvature.csv); dc_superquadric_form against mpmath's
+   numerical derivatives of LIGGGHTS' shape function (superquadric_form.csv,
+   gen_superquadric_form.py) and against dc_curvature_form of this file's
+   gradient and Hessian; relative radii: the form sum against review Eqs.
+   3-4 with the angle, and the sphere and plane cases. */
 #include "check.h"
 #include "dc/curvature.h"
 #include "dc/status.h"
@@ -28,7 +31,7 @@ int main(void)
   FILE *f = check_open_reference("curvature.csv");
   if (!f) return check_summary("curvature");
   int rows = 0;
-  double row[8];
+  double row[8], row17[17];
   while (check_read_row(f, row, 8) == 8) {
     const double a = row[0], b = row[1], c = row[2], n = row[3], x = row[4], y = row[5], k_plane = row[6],
                  k_z = row[7];
@@ -50,6 +53,63 @@ int main(void)
   }
   fclose(f);
   CHECK(rows >= 5);
+
+  /* dc_superquadric_form: to 1e-12 of the form's largest entry (the
+     reference's point is rounded to doubles) */
+  f = check_open_reference("superquadric_form.csv");
+  if (f) {
+    int n = 0;
+    double worst = 0.0;
+    while (check_read_row(f, row17, 17) == 17) {
+      double form[3];
+      const double *r = row17;
+      CHECK(dc_superquadric_form(r, r + 3, r + 5, r + 8, r + 11, form) == DC_OK);
+      const double scale = fmax(fabs(r[14]), fmax(fabs(r[15]), fabs(r[16])));
+      for (int k = 0; k < 3; k++) worst = fmax(worst, fabs(form[k] - r[14 + k]) / scale);
+      n++;
+    }
+    fclose(f);
+    CHECK(n >= 100);
+    CHECK_ABS(worst, 0.0, 1e-12, "dc_superquadric_form vs mpmath, worst error / largest entry");
+    printf("     dc_superquadric_form: %d mpmath forms, worst %.2e of the largest entry\n", n, worst);
+  }
+  /* n1 = n2: the same form as dc_curvature_form of the separable gradient
+     and Hessian, on random points and bases */
+  {
+    unsigned long long seed = 7;
+    double worst = 0.0;
+    for (int i = 0; i < 2000; i++) {
+      const double nb = 2.0 + floor(7.0 * check_uniform(&seed)) * (i % 2 ? 1.0 : 0.5);
+      const double s[3] = {0.5 + check_uniform(&seed), 0.5 + check_uniform(&seed), 0.5 + check_uniform(&seed)};
+      const double bl[2] = {nb, nb};
+      double d[3] = {check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5}, g[3], H[9];
+      double sum = 0.0;
+      for (int k = 0; k < 3; k++) sum += pow(fabs(d[k]) / s[k], nb);
+      const double t = pow(sum, -1.0 / nb);
+      double p[3] = {t * d[0], t * d[1], t * d[2]}, nrm[3], u[3], v[3], want[3], got[3];
+      superquadric(s, nb, p, g, H);
+      for (int k = 0; k < 3; k++) nrm[k] = g[k];
+      normalize(nrm);
+      dc_tangent_basis(nrm, u, v);
+      CHECK(dc_curvature_form(g, H, u, v, want) == DC_OK);
+      CHECK(dc_superquadric_form(s, bl, p, u, v, got) == DC_OK);
+      const double scale = fmax(fabs(want[0]), fmax(fabs(want[1]), fabs(want[2])));
+      for (int k = 0; k < 3; k++) worst = fmax(worst, fabs(got[k] - want[k]) / scale);
+    }
+    CHECK_ABS(worst, 0.0, 1e-13, "dc_superquadric_form vs dc_curvature_form, n1 = n2");
+  }
+  /* its domain */
+  {
+    const double s[3] = {1.0, 1.0, 1.0}, bl[2] = {4.0, 4.0}, p[3] = {1.0, 0.0, 0.0}, u[3] = {0, 1, 0}, v[3] = {0, 0, 1};
+    const double s0[3] = {1.0, 0.0, 1.0}, b1[2] = {1.5, 4.0}, pn[3] = {NAN, 0.0, 0.0}, zero[3] = {0, 0, 0};
+    double form[3];
+    CHECK(dc_superquadric_form(s, bl, p, u, v, form) == DC_OK);
+    CHECK_ABS(form[0], 0.0, 0.0, "n = 4 at the face centre: flat");
+    CHECK(dc_superquadric_form(s0, bl, p, u, v, form) == DC_EDOM);
+    CHECK(dc_superquadric_form(s, b1, p, u, v, form) == DC_EDOM);
+    CHECK(dc_superquadric_form(s, bl, pn, u, v, form) == DC_EDOM);
+    CHECK(dc_superquadric_form(s, bl, zero, u, v, form) == DC_EDOM);   /* the centre: grad f = 0 */
+  }
 
   /* ellipsoid at the end of its a axis: curvatures a/b^2 and a/c^2 */
   {

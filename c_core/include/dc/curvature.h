@@ -27,6 +27,17 @@ void dc_tangent_basis(const double n[3], double u[3], double v[3]);
 int dc_curvature_form(const double grad[3], const double hess[9],
                       const double u[3], const double v[3], double form[3]);
 
+/* Curvature form, on the basis (u, v), of the superquadric
+   f = (|x/a|^n2 + |y/b|^n2)^(n1/n2) + |z/c|^n1 - 1 (LIGGGHTS' shape
+   function: shape = (a, b, c), blockiness = (n1, n2)) at the point p on it,
+   all in the body's frame: dc_curvature_form of f's gradient and Hessian,
+   computed without forming them (integer blockiness by products). DC_EDOM
+   for a, b, c not > 0, n1 or n2 not in [2, 1e3], non-finite p, u, v, or a
+   gradient 0 or not finite at p (f < 0 inside, so the form is positive
+   on a convex face). */
+int dc_superquadric_form(const double shape[3], const double blockiness[2], const double p[3],
+                         const double u[3], const double v[3], double form[3]);
+
 /* Eigenvalues k1 >= k2 of a form and the angle theta of the k1 direction
    from u (direction cos(theta) u + sin(theta) v). */
 void dc_form_principal(const double form[3], double *k1, double *k2, double *theta);
