@@ -79,7 +79,11 @@ int dc_curvature_form(const double grad[3], const double hess[9],
     matvec(hess, v, Hv);
     const double inv_g = 1.0 / sqrt(g2f);
     const double f0 = dot(u, Hu) * inv_g, f1 = 0.5 * (dot(u, Hv) + dot(v, Hu)) * inv_g, f2 = dot(v, Hv) * inv_g;
-    if (isfinite(f0) && isfinite(f1) && isfinite(f2) && all_finite(u, 3) && all_finite(v, 3)) {
+    /* one test: a non-finite entry makes the sum non-finite (a sum that
+       overflows only sends a finite form to the general path), and a
+       non-finite u or v makes f0 or f2 so (each squared entry meets a
+       diagonal Hessian entry: inf or, against a 0, NaN) */
+    if (isfinite(f0 + f1 + f2)) {
       out[0] = f0;
       out[1] = f1;
       out[2] = f2;
@@ -111,13 +115,22 @@ int dc_curvature_form(const double grad[3], const double hess[9],
   return DC_OK;
 }
 
-/* |x|^k for a small integer k >= 0 */
-static double pow_abs_int(double x, int k)
+/* |x|^k for an integer k in [0, 14] */
+static inline double pow_abs_int(double x, int k)
 {
-  const double a = fabs(x);
-  double r = 1.0;
-  for (int i = 0; i < k; i++) r *= a;
-  return r;
+  const double a = fabs(x), a2 = a * a;
+  switch (k) {
+  case 0: return 1.0;
+  case 1: return a;
+  case 2: return a2;
+  case 3: return a2 * a;
+  case 4: return a2 * a2;
+  default: {
+    double r = a2 * a2;
+    for (int i = 4; i < k; i++) r *= a;
+    return r;
+  }
+  }
 }
 
 int dc_superquadric_form(const double shape[3], const double blockiness[2], const double p[3],
@@ -131,7 +144,7 @@ int dc_superquadric_form(const double shape[3], const double blockiness[2], cons
   /* |x/a|^(n2-2), |y/b|^(n2-2), |z/c|^(n1-2), then one power higher */
   double X2, Y2, Z2;
   const int k1 = (int)n1, k2 = (int)n2;
-  if (k1 == n1 && k2 == n2 && k1 <= 16 && k2 <= 16) {
+  if (k1 == n1 && k2 == n2 && k1 <= 16 && k2 <= 16) {   /* exponents k - 2 <= 14 */
     X2 = pow_abs_int(xa, k2 - 2);
     Y2 = pow_abs_int(yb, k2 - 2);
     Z2 = pow_abs_int(zc, k1 - 2);
