@@ -609,11 +609,15 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     return DC_EDOM;
   const double nn = dot3(n, n);
   if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
-  /* without twisting the twist part of h (from nseg_t on) is neither read nor written */
-  const int ns = (int)h->nseg, nt = p->twisting ? (int)h->nseg_t : 0;
-  if (!(h->nseg == (double)ns && ns >= 0 && ns <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
-        (!p->twisting || (h->nseg_t == (double)nt && nt >= 0 && nt <= DC_CMD_MAX_SEG))))
+  /* without twisting the twist part of h (from nseg_t on) is neither read nor written;
+     the piece counts are range-checked as doubles before the conversion to
+     int (a corrupted count beyond int's range would make it undefined) and
+     must then be whole numbers */
+  if (!(h->nseg >= 0.0 && h->nseg <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
+        (!p->twisting || (h->nseg_t >= 0.0 && h->nseg_t <= DC_CMD_MAX_SEG))))
     return DC_EDOM;
+  const int ns = (int)h->nseg, nt = p->twisting ? (int)h->nseg_t : 0;
+  if (!(h->nseg == (double)ns && (!p->twisting || h->nseg_t == (double)nt))) return DC_EDOM;
   /* the stored pieces: their values in independent sums; the
      breakpoints finite and increasing to 1 in one comparison chain (a NaN
      fails every comparison) */

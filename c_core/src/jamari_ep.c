@@ -43,9 +43,9 @@ static int get_d1(const dc_hertz_geom *g, double Estar, const dc_jamari_params *
   const double KH = p->K_v * p->H, cH = p->c_h * p->H;
   if (!(KH <= DBL_MAX && cH <= DBL_MAX)) return DC_ERANGE;
   /* second printed form: 2 Rc E K (K_v H/E*)^2 */
-  const double h = p->K_v * (p->H / Estar);
+  const double HE = p->H / Estar, h = p->K_v * HE;
   o->d1 = 2.0 * g->Rc * g->E * g->K * (h * h);
-  if (!(h >= DBL_MIN && h <= DBL_MAX && o->d1 >= DBL_MIN && o->d1 <= DBL_MAX)) {
+  if (!(HE >= DBL_MIN && h >= DBL_MIN && h <= DBL_MAX && o->d1 >= DBL_MIN && o->d1 <= DBL_MAX)) {
     /* an intermediate or the result left the range: mantissas multiplied,
        exponents summed, one scaling at the end (inf: no yield within the
        doubles; below DBL_MIN: DC_ERANGE beyond it) */

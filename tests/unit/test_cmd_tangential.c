@@ -815,6 +815,63 @@ static void test_status(void)
   CHECK(dc_cmd_twist_slip_moment(-1.0, 1.0, 1.0, 1.0, &k1) == DC_EDOM && k1 == -1);
 }
 
+/* A corrupted history (a wrapper's restart file, a bad memory copy): piece
+   counts that are NaN, infinite, beyond int's range, negative or
+   fractional give DC_EDOM with h and out untouched, with and without
+   twisting (they were converted to int before their range was checked:
+   undefined behaviour for NaN and values beyond int's range). Without
+   twisting nseg_t is not read. */
+static void test_corrupted_history(void)
+{
+  const dc_mindlin_pair m = {1.0, 0.3};
+  double n[3], e1[3], e2[3];
+  frame(n, e1, e2);
+  const dc_patch good = patch_of(1.0, 0.5, e1, 1.0);
+  const double du[3] = {1e-3, 0, 0};
+  static const double bad[] = {NAN, -NAN, INFINITY, -INFINITY, 1e300, -1e300, 3e9, -3e9, 2147483648.0,
+                               -2147483649.0, 9.0, 1e10, -5.0, -1.0, 2.5, 0.5, -0.5, 8.000000000000002};
+  for (int tw = 0; tw < 2; tw++) {
+    const dc_cmd_params p = {0.5, 0.0, 0, tw};
+    dc_cmd_state h, h0;
+    dc_cmd_out o, o0;
+    memset(&h, 0, sizeof h);
+    /* a history of a few pieces (three force reversals, and a twist) */
+    for (int s = 0; s < 4; s++) {
+      const double d[3] = {(s & 1 ? -1.0 : 1.0) * 0.3 * e1[0], (s & 1 ? -1.0 : 1.0) * 0.3 * e1[1],
+                           (s & 1 ? -1.0 : 1.0) * 0.3 * e1[2]};
+      CHECK(dc_cmd_step(&p, &m, &good, n, d, s & 1 ? -0.2 : 0.2, 1e-6, &h, &o) == DC_OK);
+    }
+    CHECK(h.nseg >= 2.0 && (!tw || h.nseg_t >= 1.0));
+    h0 = h;
+    memset(&o, 0x5A, sizeof o);
+    o0 = o;
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+      for (int field = 0; field < 2; field++) {
+        h = h0;
+        if (field == 0) h.nseg = bad[i];
+        else h.nseg_t = bad[i];
+        const dc_cmd_state hc = h;
+        const int st = dc_cmd_step(&p, &m, &good, n, du, 0.01, 1e-6, &h, &o);
+        if (field == 1 && !tw) {
+          /* not read without twisting, and not written */
+          CHECK(st == DC_OK && !memcmp(&h.nseg_t, &hc.nseg_t, sizeof h.nseg_t));
+          memcpy(&o, &o0, sizeof o);
+          continue;
+        }
+        if (!CHECK(st == DC_EDOM && !memcmp(&h, &hc, sizeof h) && !memcmp(&o, &o0, sizeof o)))
+          printf("  twisting %d, %s = %.17g: status %d\n", tw, field ? "nseg_t" : "nseg", bad[i], st);
+      }
+    }
+    /* the counts of the uncorrupted history still work, and -0 is 0 */
+    h = h0;
+    CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.01, 1e-6, &h, &o) == DC_OK);
+    memset(&h, 0, sizeof h);
+    h.nseg = -0.0;
+    h.nseg_t = -0.0;
+    CHECK(dc_cmd_step(&p, &m, &good, n, du, 0.01, 1e-6, &h, &o) == DC_OK);
+  }
+}
+
 /* A seeded random sweep: 1e5 steps of random patches (circles, ellipses
    down to b/a = 1e-3, F_bound including 0, now and then not formed),
    normals turning slowly and now and then jumping, displacements from
@@ -949,6 +1006,7 @@ int main(void)
   test_unloading_to_zero();
   test_dissipation();
   test_status();
+  test_corrupted_history();
   test_random_sweep();
   timing();
   return check_summary("test_cmd_tangential");

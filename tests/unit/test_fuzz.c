@@ -3339,6 +3339,269 @@ static void fuzz_rolling(void)
 }
 
 /* ---------------------------------------------------------------- */
+/* The inline hot-path forms and the remaining constructors (run last, so
+   that the cases drawn for the blocks above stay what they were).       */
+
+/* x made >= 0 (-0 kept) and finite; > 0: and not 0 (PICK's ulps step
+   across 0 and DBL_MAX) */
+static double fz_nonneg(double x) { return x < 0.0 ? fmin(-x, DBL_MAX) : fmin(x, DBL_MAX); }
+static double fz_positive(double x) { return x == 0.0 ? DBL_TRUE_MIN : fz_nonneg(x); }
+
+/* hertz_elliptic.h: dc_hertz_geometry_circle is dc_hertz_geometry(R, R)
+   bit for bit for every R > 0 finite (subnormal to DBL_MAX) */
+static void fuzz_hertz_geometry_circle(void)
+{
+  fz_fn *f = fz_new("dc_hertz_geometry_circle");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double r = U();
+    const double R = r < 0.3 ? fz_log(1e-6, 1.0) : r < 0.85 ? fz_pos()
+                     : fz_positive(PICK(DBL_TRUE_MIN, DBL_MIN, 0x1p-511, 0x1p-512, 0x1p-537, 0x1p-538, 0x1p511, 0x1p512,
+                                        DBL_MAX / 2, DBL_MAX, 1.0));
+    dc_hertz_geom g, h;
+    SENTINEL(g);
+    SENTINEL(h);
+    dc_hertz_geometry_circle(R, &g);
+    const int st = dc_hertz_geometry(R, R, &h);
+    f->calls++;
+    FZ_EXPECT(f, FIN(g) && g.Rc >= 0.0 && g.Rc <= R, "not finite, or Rc not in [0, R]", "R %.17g: Rc %.17g", R, g.Rc);
+    FZ_EXPECT(f, st == DC_OK && !memcmp(&g, &h, sizeof g), "differs from dc_hertz_geometry(R, R)",
+              "R %.17g: Rc %.17g vs %.17g (status %d)", R, g.Rc, h.Rc, st);
+  }
+  fz_done(f);
+}
+
+/* damping.h: the Tsuji coefficient (checked) and the inline laws (domains
+   in the header; finite and >= 0 wherever their exact values and the
+   product S m are finite, as dc_damping_restitution above); the dispatch
+   dc_damping_gamma is the law's own function bit for bit, 0 for another
+   law */
+static double damping_law_fn(int law, double coef, double S, double delta, double m)
+{
+  switch (law) {
+  case DC_DAMPING_RESTITUTION: return dc_damping_restitution(coef, S, m);
+  case DC_DAMPING_VISCOELASTIC: return dc_damping_viscoelastic(coef, S);
+  case DC_DAMPING_KUWABARA_KONO: return dc_damping_kuwabara_kono(coef, delta);
+  case DC_DAMPING_TSUJI: return dc_damping_tsuji(coef, S, m);
+  default: return 0.0;
+  }
+}
+
+static void fuzz_damping_laws(void)
+{
+  fz_fn *f = fz_new("dc_damping_tsuji_alpha");
+  fz_fn *ft = fz_new("dc_damping_tsuji");
+  ft->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double e = A(U() < 0.6 ? U() : U() < 0.5 ? fz_log(1e-320, 1.0) : PICK(0.0, 1.0, DBL_TRUE_MIN, 1.0 + DBL_EPSILON, 0.1));
+    double al;
+    SENTINEL(al);
+    const int st = dc_damping_tsuji_alpha(e, &al);
+    /* |ln e| / (ln^2 e + 10.1354)^1/2 < 1 */
+    FZ_CHECK(f, st, !isfinite(e), e > 0.0 && e <= 1.0, UNTOUCHED(al), isfinite(al) && al >= 0.0 && al < 2.2664,
+             "e %.17g: alpha %.17g", e, al);
+    if (st != DC_OK) dc_damping_tsuji_alpha(U() < 0.5 ? 1.0 - U() : fz_log(1e-300, 1.0), &al);
+    /* the inline law with the coefficient it is made for, and with any
+       alpha >= 0 */
+    ft->seconds -= fz_now();
+    if (U() < 0.3) al = U() < 0.2 ? fz_nonneg(PICK(0.0, DBL_TRUE_MIN, DBL_MAX)) : fz_pos();
+    const double S = U() < 0.5 ? fz_log(1e-3, 1e9) : U() < 0.1 ? fz_nonneg(PICK(0.0, -0.0, DBL_MAX, DBL_TRUE_MIN)) : fz_pos();
+    const double m = U() < 0.5 ? fz_log(1e-12, 1.0) : U() < 0.1 ? fz_positive(PICK(DBL_TRUE_MIN, DBL_MAX)) : fz_pos();
+    const double g = dc_damping_tsuji(al, S, m);
+    ft->calls++;
+    const double sm = 2.0 / 3.0 * S * m;
+    if (isfinite(sm) && !(lg(al) + 0.5 * lg(sm) > LOG_MAX - 1.0))
+      FZ_EXPECT(ft, isfinite(g) && g >= 0.0, "not finite and >= 0", "alpha %.17g S %.17g m %.17g: %.17g", al, S, m, g);
+    ft->seconds += fz_now();
+  }
+  fz_done(f);
+
+  f = fz_new("dc_damping_kuwabara_kono");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double eta = U() < 0.4 ? fz_log(1e-3, 1e6) : U() < 0.1 ? fz_nonneg(PICK(0.0, -0.0, DBL_TRUE_MIN, DBL_MAX)) : fz_pos();
+    const double d = U() < 0.4 ? fz_log(1e-12, 1e-3) : U() < 0.1 ? fz_nonneg(PICK(0.0, -0.0, DBL_TRUE_MIN, DBL_MAX)) : fz_pos();
+    const double g = dc_damping_kuwabara_kono(eta, d);
+    f->calls++;
+    FZ_EXPECT(f, !memcmp(&g, &(double){eta * sqrt(d)}, sizeof g), "not eta delta^1/2", "%.17g %.17g", eta, d);
+    if (!(lg(eta) + 0.5 * lg(d) > LOG_MAX - 1.0))
+      FZ_EXPECT(f, isfinite(g) && g >= 0.0, "not finite and >= 0", "eta %.17g delta %.17g: %.17g", eta, d, g);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_damping_gamma");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const int law = AI(UI(5));
+    /* each law's coefficient as its setting makes it, or wild */
+    double coef;
+    const double e = U() < 0.1 ? PICK(1.0, DBL_TRUE_MIN) : 1.0 - U();
+    switch (UI(4)) {
+    case 0: dc_damping_beta(e, &coef); break;
+    case 1: coef = fz_log(1e-9, 1e-2); break;
+    case 2: coef = fz_log(1e-3, 1e6); break;
+    default: dc_damping_tsuji_alpha(e, &coef); break;
+    }
+    coef = A(coef);
+    const double S = A(U() < 0.5 ? fz_log(1e-3, 1e9) : fz_pos()), d = A(U() < 0.5 ? fz_log(1e-12, 1e-3) : fz_pos());
+    const double m = A(U() < 0.5 ? fz_log(1e-12, 1.0) : fz_pos());
+    const double g = dc_damping_gamma(law, coef, S, d, m), w = damping_law_fn(law, coef, S, d, m);
+    f->calls++;
+    /* (a NaN's sign bit may differ between two inlined copies) */
+    FZ_EXPECT(f, (!memcmp(&g, &w, sizeof g) || (isnan(g) && isnan(w))) && (law >= 0 && law <= 3 ? 1 : g == 0.0),
+              "not the law's own function",
+              "law %d coef %.17g S %.17g delta %.17g m %.17g: %.17g vs %.17g", law, coef, S, d, m, g, w);
+  }
+  fz_done(f);
+}
+
+/* gw_rough.h: the rough-sphere pair (Feng or tabulated) */
+#define N_GWS 20000L
+static dc_gw_sphere_pair gs_out;
+static dc_gw_table_law gs_tl;
+static dc_gw_table_pair gs_tp;
+static const unsigned char fz_zero[sizeof(dc_gw_table_pair)];
+_Static_assert(sizeof(dc_gw_sphere_pair) <= sizeof fz_ff, "fz_ff smaller than an output");
+
+static void fuzz_gw_sphere(void)
+{
+  fz_fn *f = fz_new("dc_gw_sphere_pair_init");
+  fz_fn *ff = fz_new("dc_gw_sphere_pair_force");
+  fz_fn *fr = fz_new("dc_gw_sphere_reach");
+  ff->seconds = fr->seconds = 0.0;
+  for (long k = 0; k < N_GWS; k++) {
+    fz_call();
+    const int law = AI(UI(2)), var = AI(UI(2));
+    const double mu = A(U() < 0.6 ? 1.0 + 49.0 * U() : PICK(1.0, 2.0, 4.0, 25.0, 50.0));
+    const double E = A(U() < 0.5 ? fz_log(1e5, 1e12) : fz_pos());
+    const double sg = A(U() < 0.5 ? fz_log(1e-9, 1e-4) : U() < 0.2 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN, 1e-310) : fz_pos());
+    const int bad = !ALLFIN(mu, E, sg);
+    const int dom = !bad && E > 0.0 && sg > 0.0 &&
+                    ((law == DC_GW_SPHERE_FENG && (var == DC_FENG_TABLE || var == DC_FENG_FITTED) &&
+                      mu >= DC_FENG_MU_MIN && mu <= DC_FENG_MU_MAX) ||
+                     (law == DC_GW_SPHERE_TABULATED && mu >= DC_GW_TABLE_MU_MIN && mu <= DC_GW_TABLE_MU_MAX));
+    /* what the law's own constructors give */
+    dc_feng_law fl;
+    dc_feng_pair fp;
+    int want = DC_EDOM;
+    if (law == DC_GW_SPHERE_FENG) {
+      want = dc_feng_init(mu, var, &fl);
+      if (want == DC_OK) want = dc_feng_pair_init(&fl, E, sg, &fp);
+    } else if (law == DC_GW_SPHERE_TABULATED) {
+      want = dc_gw_table_init(mu, &gs_tl);
+      if (want == DC_OK) want = dc_gw_table_pair_init(&gs_tl, E, sg, &gs_tp);
+    }
+    SENTINEL(gs_out);
+    const int st = dc_gw_sphere_pair_init(law, var, mu, E, sg, &gs_out);
+    const int feng = law == DC_GW_SPHERE_FENG;
+    const int fin_ok = gs_out.law == law && (feng ? FIN(gs_out.feng) && !memcmp(&gs_out.table, fz_zero, sizeof gs_out.table)
+                                                  : FIN(gs_out.table) && !memcmp(&gs_out.feng, fz_zero, sizeof gs_out.feng));
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(gs_out), fin_ok, "law %d variant %d mu %.17g Estar %.17g sigma %.17g", law, var,
+             mu, E, sg);
+    FZ_EXPECT(f, st == want && (st != DC_OK || (feng ? !memcmp(&gs_out.feng, &fp, sizeof fp)
+                                                     : !memcmp(&gs_out.table, &gs_tp, sizeof gs_tp))),
+              "not the law's own constructor", "law %d variant %d mu %.17g Estar %.17g sigma %.17g: status %d, want %d", law,
+              var, mu, E, sg, st, want);
+    /* the reach of any law setting: -3 (Feng) or X_LO (tabulated) */
+    fr->seconds -= fz_now();
+    const int lr = U() < 0.5 ? law : AI(UI(2));
+    const double reach = dc_gw_sphere_reach(lr);
+    fr->calls++;
+    FZ_EXPECT(fr, reach == (lr == DC_GW_SPHERE_TABULATED ? DC_GW_TABLE_X_LO : -3.0), "not -3 or X_LO", "law %d: %.17g",
+              lr, reach);
+    fr->seconds += fz_now();
+    if (st != DC_OK) continue;
+    /* the force: the bound law's own kernel, unchanged, for any sqrtR and
+       delta; zero at and below the reach (sqrtR > 0 finite) */
+    ff->seconds -= fz_now();
+    const double rs = dc_gw_sphere_reach(law);
+    for (int j = 0; j < 4; j++) {
+      const double sR = U() < 0.7 ? sqrt(fz_log(1e-6, 1.0)) : U() < 0.5 ? fz_pos() : fz_wild();
+      const double r = U();
+      const double d = j == 3 ? (U() < 0.5 ? rs * sg : rs * sg * fz_log(1.0, 1e6))
+                       : r < 0.6 ? sg * (-8.0 + 16.0 * U()) : r < 0.8 ? sg * fz_log(1.0, 1e5) : fz_wild();
+      double q[2], w[2];
+      dc_gw_sphere_pair_force(&gs_out, sR, d, &q[0], &q[1]);
+      if (feng) dc_feng_pair_force(&gs_out.feng, sR, d, &w[0], &w[1]);
+      else dc_gw_table_pair_force(&gs_out.table, sR, d, &w[0], &w[1]);
+      ff->calls++;
+      FZ_EXPECT(ff, !memcmp(q, w, sizeof q), "not the bound law's kernel",
+                "law %d mu %.17g Estar %.17g sigma %.17g sqrtR %.17g delta %.17g: %.17g %.17g vs %.17g %.17g", law, mu, E,
+                sg, sR, d, q[0], q[1], w[0], w[1]);
+      /* the law scales delta by its rounded 1/sigma: exactly 0 from a few
+         ulps below reach x sigma on; at it, rounding-level (< 1e-15 of
+         4/3 E* R^1/2 sigma^3/2) */
+      const double lph = lg(4.0 / 3.0) + lg(E) + lg(sR) + 1.5 * lg(sg);
+      if (!(lph < LOG_MAX - 5.0)) continue;   /* the kernel's products leave the doubles */
+      if (d <= rs * sg * (1.0 + 8.0 * DBL_EPSILON) && sR > 0.0 && isfinite(sR))
+        FZ_EXPECT(ff, q[0] == 0.0, "force beyond the reach",
+                  "law %d mu %.17g Estar %.17g sigma %.17g sqrtR %.17g delta %.17g (reach %.17g sigma): P %.17g", law, mu,
+                  E, sg, sR, d, rs, q[0]);
+      else if (d <= rs * sg && sR > 0.0 && isfinite(sR))
+        FZ_EXPECT(ff, !(lg(q[0]) > lph - 15.0 * M_LN10), "force at the reach above rounding",
+                  "law %d mu %.17g Estar %.17g sigma %.17g sqrtR %.17g delta %.17g (reach %.17g sigma): P %.17g", law, mu,
+                  E, sg, sR, d, rs, q[0]);
+    }
+    ff->seconds += fz_now();
+  }
+  fz_done(f);
+}
+
+/* jamari_ep.h: the default K_v and parameters, the circular yield ratio */
+static void fuzz_jamari_inline(void)
+{
+  fz_fn *f = fz_new("dc_jamari_kv_default");
+  fz_fn *fd = fz_new("dc_jamari_defaults");
+  fd->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    /* Poisson's ratio in [-1, 1/2], or any finite value */
+    const double nu = U() < 0.6 ? -1.0 + 1.5 * U() : U() < 0.5 ? PICK(-1.0, 0.0, 0.5, -0.0) : fz_wide();
+    const double kv = dc_jamari_kv_default(nu);
+    f->calls++;
+    FZ_EXPECT(f, isfinite(kv) && (!(nu >= -1.0 && nu <= 0.5) || kv > 0.0), "not finite, or not > 0 for nu in [-1, 1/2]",
+              "nu %.17g: %.17g", nu, kv);
+    /* the defaults pass the parameter check for any hardness > 0 and nu in [-1, 1/2] */
+    fd->seconds -= fz_now();
+    const double H = U() < 0.5 ? fz_log(1e7, 1e10) : fz_pos();
+    const dc_jamari_params p = dc_jamari_defaults(H, nu);
+    dc_param_error err;
+    const int st = dc_jamari_check(&p, &err);
+    fd->calls++;
+    if (nu >= -1.0 && nu <= 0.5)
+      FZ_EXPECT(fd, st == DC_OK && p.H == H && p.K_v == kv, "defaults fail the parameter check", "H %.17g nu %.17g: status %d",
+                H, nu, st);
+    fd->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* (pi K_v H/(2 E*))^2 for inputs in the domain of dc_jamari_onsets: never
+     NaN, >= 0, finite wherever that value is; delta_n1 / R of the circular
+     geometry wherever both are normal numbers */
+  f = fz_new("dc_jamari_circle_yield_ratio");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (fz_pw > 0.15) fz_pw = 0.15;   /* in the domain often */
+    dc_jamari_params p;
+    do p = jamari_params(); while (!jamari_params_in(&p));
+    const double E = U() < 0.6 ? fz_log(1e9, 1e12) : U() < 0.1 ? fz_positive(PICK(DBL_TRUE_MIN, DBL_MIN, DBL_MAX)) : fz_pos();
+    const double R = U() < 0.6 ? fz_log(1e-6, 1e-1) : fz_pos();
+    const double q = dc_jamari_circle_yield_ratio(E, &p);
+    f->calls++;
+    const double lq = 2.0 * (lg(M_PI / 2.0) + lg(p.K_v) + lg(p.H) - lg(E));
+    FZ_EXPECT(f, !isnan(q) && q >= 0.0, "NaN or negative", "E* %.17g H %.17g K_v %.17g: %.17g", E, p.H, p.K_v, q);
+    if (lq < LOG_MAX - 1.0)
+      FZ_EXPECT(f, isfinite(q), "not finite where its value is", "E* %.17g H %.17g K_v %.17g: %.17g", E, p.H, p.K_v, q);
+    dc_hertz_geom g;
+    dc_hertz_geometry_circle(R, &g);
+    double d[2];
+    if (dc_jamari_onsets(&g, E, &p, &d[0], &d[1]) == DC_OK && g.Rc >= DBL_MIN && q * R >= DBL_MIN && q * R <= DBL_MAX &&
+        q >= DBL_MIN)
+      FZ_EXPECT(f, fabs(q * R / d[0] - 1.0) < 1e-14, "not delta_n1 / R", "E* %.17g H %.17g K_v %.17g R %.17g: %.17g vs %.17g",
+                E, p.H, p.K_v, R, q * R, d[0]);
+  }
+  fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
 /* The reported cases, by name (the sweeps above find them too).     */
 
 static void known_cases(void)
@@ -3459,6 +3722,10 @@ int main(void)
   fuzz_gw_table();
   fuzz_gwa_table();
   fuzz_rolling();
+  fuzz_hertz_geometry_circle();
+  fuzz_damping_laws();
+  fuzz_gw_sphere();
+  fuzz_jamari_inline();
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",
          "seconds");

@@ -612,6 +612,52 @@ static void timing(void)
   (void)sink;
 }
 
+/* Reproductions of the fuzz's findings (tests/unit/test_fuzz.c), in the
+   domain of dc_jamari_check and dc_jamari_onsets:
+   - dc_jamari_onsets formed K_v (H/E*) with H/E* subnormal and K_v (H/E*)
+     normal, so it lost digits (23 % here: H/E* is 4.5 subnormal steps);
+     now such an intermediate takes the scaled path too;
+   - dc_jamari_circle_yield_ratio formed pi/2 K_v first: +inf for
+     K_v = DBL_MAX with a ratio of 4e197, 62 % off for a subnormal K_v,
+     2.7e-5 off for a subnormal pi/2 K_v H (E* subnormal). */
+static void extreme_onsets(void)
+{
+  dc_hertz_geom g;
+  dc_hertz_geometry(1e-3, 1e-3, &g);
+  /* onsets: H/E* = 2.2e-323 */
+  {
+    const dc_jamari_params p = {DBL_MIN, 1e250, 1e250, 108.0};
+    const double E = 1e15;
+    CHECK(dc_jamari_check(&p, &(dc_param_error){0}) == DC_OK);
+    double d1 = -1.0, d2 = -1.0;
+    CHECK(dc_jamari_onsets(&g, E, &p, &d1, &d2) == DC_OK);
+    const double want = pow(M_PI / 2.0 * (p.K_v * p.H) / E, 2) * 1e-3;
+    CHECK_REL(d1, want, 1e-14, "delta_n1 with H/E* subnormal");
+    CHECK_REL(d2, 54.0 * d1, 1e-15, "delta_n2 with H/E* subnormal");
+    CHECK_REL(dc_jamari_circle_yield_ratio(E, &p) * 1e-3, d1, 1e-14, "circle yield ratio, H/E* subnormal");
+  }
+  /* the circle's yield ratio: inputs in the domain, each against the
+     value in long double (wider exponent range than double's on the
+     targets, x86-64 and aarch64) and against delta_n1 / R */
+  const struct { double E, H, K_v, c_h; } c[] = {
+    {4632154569.6028948, 1e-200, DBL_MAX, DBL_MAX},      /* gave +inf, is 3.8e197 */
+    {24986776346.723164, 1e300, DBL_TRUE_MIN, 1.0},      /* gave 1.58e-69, is 9.73e-70 */
+    {DBL_TRUE_MIN, 37792509.572018519, 9.82548349884487e-320, 1.0},   /* 2.7e-5 off */
+    {2e11, 2e9, 0.577, 1.0},                             /* ordinary */
+  };
+  for (size_t i = 0; i < sizeof c / sizeof c[0]; i++) {
+    const dc_jamari_params p = {c[i].H, c[i].K_v, c[i].c_h, 108.0};
+    CHECK(dc_jamari_check(&p, &(dc_param_error){0}) == DC_OK);
+    const double q = dc_jamari_circle_yield_ratio(c[i].E, &p);
+    const long double w = 1.5707963267948966192L * c[i].K_v * c[i].H / c[i].E;   /* long double: no overflow here */
+    const double want = (double)(w * w);
+    if (!CHECK_REL(q, want, 1e-14, "circle yield ratio"))
+      printf("  E* %.17g H %.17g K_v %.17g\n", c[i].E, c[i].H, c[i].K_v);
+    double d1, d2;
+    if (dc_jamari_onsets(&g, c[i].E, &p, &d1, &d2) == DC_OK) CHECK_REL(q * 1e-3, d1, 1e-14, "circle yield ratio vs delta_n1");
+  }
+}
+
 int main(void)
 {
   table();
@@ -622,6 +668,7 @@ int main(void)
   unloading();
   cap_with_defaults();
   check_params();
+  extreme_onsets();
   timing();
   return check_summary("jamari_ep");
 }

@@ -190,7 +190,9 @@ typedef struct {
    Updates h (pieces it no longer uses become 0, so that one state has one
    history; the twist fields are not touched without twisting) and fills
    out. DC_EDOM for
-   a non-finite or out-of-domain input; DC_ERANGE when a result, a stored
+   a non-finite or out-of-domain input (a history whose piece count nseg,
+   or nseg_t with twisting, is not a whole number in [0, DC_CMD_MAX_SEG]
+   included); DC_ERANGE when a result, a stored
    value or a limit (3 mu F_b / (2 k), the stiffnesses) overflows. On an
    error h and out are untouched. A friction load so small that the force
    is subnormal gives a force whose direction has few significant bits. No

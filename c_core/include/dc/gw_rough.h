@@ -100,7 +100,11 @@ static inline void dc_gw_sphere_pair_force(const dc_gw_sphere_pair *p, double sq
 }
 
 /* The overlap, in units of sigma, at and below which the law's force is 0
-   (a wrapper's contact reach): -3 (Feng Eq. 64) or -6 (tabulated). */
+   (a wrapper's contact reach): -3 (Feng Eq. 64) or -6 (tabulated). The
+   laws scale delta by their rounded 1/sigma, so at delta = reach x sigma
+   as a wrapper rounds it the force may be of rounding size (under 1e-15
+   of 4/3 E* R^1/2 sigma^3/2); it is exactly 0 from
+   reach x sigma x (1 + 8 DBL_EPSILON) down (tests/unit/test_fuzz.c). */
 static inline double dc_gw_sphere_reach(int law)
 {
   return law == DC_GW_SPHERE_TABULATED ? DC_GW_TABLE_X_LO : -3.0;

@@ -119,6 +119,7 @@
 #ifndef DC_JAMARI_EP_H
 #define DC_JAMARI_EP_H
 
+#include <float.h>
 #include <stddef.h>
 #include "dc/contract.h"
 #include "dc/hertz_elliptic.h"
@@ -160,10 +161,20 @@ static inline dc_jamari_params dc_jamari_defaults(double H, double nu)
 
 /* delta_n1 / R of a circular contact of effective radius R (Rc = R/2):
    (pi K_v H / (2 E*))^2, Eq. 41 with E = K = pi/2. For a wrapper's elastic
-   fast path (inputs as dc_jamari_onsets; unchecked). */
+   fast path (inputs as dc_jamari_onsets; unchecked). Never NaN there:
+   within a few ulps wherever the value is a normal number, +inf where it
+   overflows (no yield within the doubles), 0 where it underflows. Where
+   pi/2 K_v or pi/2 K_v H leaves the normal range, the mantissas are
+   multiplied and the exponents summed (it gave inf or lost digits). */
 static inline double dc_jamari_circle_yield_ratio(double Estar, const dc_jamari_params *p)
 {
-  const double q = 1.5707963267948966 * p->K_v * p->H / Estar;
+  const double a = 1.5707963267948966 * p->K_v, b = a * p->H;
+  double q = b / Estar;
+  if (!(a >= DBL_MIN && b >= DBL_MIN && b <= DBL_MAX)) {
+    int ek, eh, ee;
+    const double mk = frexp(p->K_v, &ek), mh = frexp(p->H, &eh), me = frexp(Estar, &ee);
+    q = ldexp(1.5707963267948966 * mk * mh / me, ek + eh - ee);
+  }
   return q * q;
 }
 
