@@ -137,7 +137,8 @@ int dc_superquadric_form(const double shape[3], const double blockiness[2], cons
                          const double u[3], const double v[3], double out[3])
 {
   const double n1 = blockiness[0], n2 = blockiness[1];
-  if (!(shape[0] > 0.0 && shape[1] > 0.0 && shape[2] > 0.0 && n1 >= 2.0 && n1 <= 1e3 && n2 >= 2.0 && n2 <= 1e3))
+  if (!(shape[0] > 0.0 && shape[1] > 0.0 && shape[2] > 0.0 && shape[0] <= DBL_MAX && shape[1] <= DBL_MAX &&
+        shape[2] <= DBL_MAX && n1 >= 2.0 && n1 <= 1e3 && n2 >= 2.0 && n2 <= 1e3))
     return DC_EDOM;
   const double ia = 1.0 / shape[0], ib = 1.0 / shape[1], ic = 1.0 / shape[2];
   const double xa = p[0] * ia, yb = p[1] * ib, zc = p[2] * ic;

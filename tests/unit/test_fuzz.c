@@ -379,6 +379,50 @@ static void fuzz_curvature_form(void)
   fz_done(f);
 }
 
+/* dc_superquadric_form: typical bodies and points on their surface (then
+   DC_OK is due), some inputs wild */
+static void fuzz_superquadric_form(void)
+{
+  fz_fn *f = fz_new("dc_superquadric_form");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double scale = fz_log(1e-6, 1e3);
+    double s[3], bl[2], d[3], p[3], n[3], u[3], v[3], form[3];
+    for (int i = 0; i < 3; i++) s[i] = scale * fz_log(0.1, 10.0);
+    for (int i = 0; i < 2; i++) bl[i] = U() < 0.5 ? (double)(2 + (int)(7.0 * U())) : 2.0 + 10.0 * U();
+    unit_vector(d);
+    /* onto the surface along d: f scales as t^n1 along z, so bisect */
+    double lo = 0.0, hi = 4.0 * fmax(s[0], fmax(s[1], s[2]));
+    for (int it = 0; it < 56; it++) {
+      const double t = 0.5 * (lo + hi);
+      const double X = pow(fabs(t * d[0]) / s[0], bl[1]) + pow(fabs(t * d[1]) / s[1], bl[1]);
+      if (pow(X, bl[0] / bl[1]) + pow(fabs(t * d[2]) / s[2], bl[0]) < 1.0) lo = t; else hi = t;
+    }
+    for (int i = 0; i < 3; i++) p[i] = 0.5 * (lo + hi) * d[i];
+    unit_vector(n);
+    dc_tangent_basis(n, u, v);
+    /* off-pole points only count as typical: the gradient is 0 at a pole
+       of n1 < n2 (0 * inf) */
+    const int typical = fabs(d[0]) > 0.05 && fabs(d[1]) > 0.05 && fabs(d[2]) > 0.05;
+    int wild = 0;
+    for (int i = 0; i < 3; i++) { const double x = A(s[i]); wild |= x != s[i]; s[i] = x; }
+    for (int i = 0; i < 2; i++) { const double x = A(bl[i]); wild |= x != bl[i]; bl[i] = x; }
+    for (int i = 0; i < 3; i++) { const double x = A(p[i]); wild |= x != p[i]; p[i] = x; }
+    for (int i = 0; i < 3; i++) { u[i] = A(u[i]); v[i] = A(v[i]); }
+    const int bad = !fin(s, 3) || !fin(bl, 2) || !fin(p, 3) || !fin(u, 3) || !fin(v, 3) ||
+                    !(s[0] > 0.0 && s[1] > 0.0 && s[2] > 0.0) || !(bl[0] >= 2.0 && bl[0] <= 1e3) ||
+                    !(bl[1] >= 2.0 && bl[1] <= 1e3);
+    const int dom = !bad && !wild && typical && fin(u, 3) && fin(v, 3);
+    SENTINEL(form);
+    const int st = dc_superquadric_form(s, bl, p, u, v, form);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(form), FIN(form),
+             "shape (%.17g, %.17g, %.17g) blockiness (%.17g, %.17g) p (%.17g, %.17g, %.17g) u (%.17g, %.17g, %.17g) "
+             "v (%.17g, %.17g, %.17g)", s[0], s[1], s[2], bl[0], bl[1], p[0], p[1], p[2], u[0], u[1], u[2], v[0], v[1],
+             v[2]);
+  }
+  fz_done(f);
+}
+
 /* a relative curvature form: positive definite with principal curvatures
    within 1e6 of each other (clearly inside the domain), random otherwise */
 static void random_form(double form[3], int *pd)
@@ -3689,6 +3733,7 @@ int main(void)
   fuzz_ellint();
   fuzz_tangent_basis();
   fuzz_curvature_form();
+  fuzz_superquadric_form();
   fuzz_form_principal();
   fuzz_relative_radii();
   fuzz_form_major_axis();

@@ -32,7 +32,7 @@ int dc_curvature_form(const double grad[3], const double hess[9],
    function: shape = (a, b, c), blockiness = (n1, n2)) at the point p on it,
    all in the body's frame: dc_curvature_form of f's gradient and Hessian,
    computed without forming them (integer blockiness by products). DC_EDOM
-   for a, b, c not > 0, n1 or n2 not in [2, 1e3], non-finite p, u, v, or a
+   for a, b, c not finite and > 0, n1 or n2 not in [2, 1e3], non-finite p, u, v, or a
    gradient 0 or not finite at p (f < 0 inside, so the form is positive
    on a convex face). */
 int dc_superquadric_form(const double shape[3], const double blockiness[2], const double p[3],
