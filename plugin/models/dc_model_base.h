@@ -260,13 +260,11 @@ protected:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     const bool cache = curvature.caching();
     const double *kept = NULL;
-    dc_hertz_geom old;
     int held = -1;
     if (cache) {
       held = curvature.reuse(lmp, sidata, axis, &kept);
-      if (held >= 0) memcpy(&old, kept, sizeof old);
       if (held == 1) {
-        g = old;
+        memcpy(&g, kept, sizeof g);
         if (curvatureCheck > 0.0) checkReuse(sidata, g);
         return;
       }
@@ -278,7 +276,13 @@ protected:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (cache && sidata.computeflag && sidata.shearupdate) {
       refreshed_++;
-      curvature.keep(lmp, sidata, reinterpret_cast<const double *>(&g), axis, held == 0 ? geometryChange(old, g) : -1.0);
+      double change = -1.0;
+      if (held == 0) {
+        dc_hertz_geom old;
+        memcpy(&old, kept, sizeof old);
+        change = geometryChange(old, g);
+      }
+      curvature.keep(lmp, sidata, reinterpret_cast<const double *>(&g), axis, change);
     }
 #endif
   }

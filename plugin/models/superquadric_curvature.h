@@ -237,10 +237,18 @@ private:
     }
   }
 
+  /* p - x_i in body i's frame: rotated by the conjugate of its unit
+     quaternion q = (w, r), out = d + w t - r x t with t = 2 d x r (the
+     transpose of LIGGGHTS' quat_to_mat applied to d) */
   static void toBody(LAMMPS_NS::Atom *atom, int i, const double *p, double *out)
   {
-    const double d[3] = {p[0] - atom->x[i][0], p[1] - atom->x[i][1], p[2] - atom->x[i][2]};
-    MathExtraLiggghtsNonspherical::rotate_global2local(atom->quaternion[i], d, out);
+    const double *q = atom->quaternion[i], *x = atom->x[i];
+    const double d[3] = {p[0] - x[0], p[1] - x[1], p[2] - x[2]};
+    const double t[3] = {2.0 * (d[1] * q[3] - d[2] * q[2]), 2.0 * (d[2] * q[1] - d[0] * q[3]),
+                         2.0 * (d[0] * q[2] - d[1] * q[1])};
+    out[0] = d[0] + q[0] * t[0] - (q[2] * t[2] - q[3] * t[1]);
+    out[1] = d[1] + q[0] * t[1] - (q[3] * t[0] - q[1] * t[2]);
+    out[2] = d[2] + q[0] * t[2] - (q[1] * t[1] - q[2] * t[0]);
   }
   static double minAxis(LAMMPS_NS::Atom *atom, int i)
   {
