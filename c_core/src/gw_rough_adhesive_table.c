@@ -54,26 +54,62 @@ int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, d
   return DC_OK;
 }
 
-/* e^L for the table's L (< 0.5): 2^k e^r, r = L - k ln 2 in
-   [-ln2/2, ln2/2], e^r by its Taylor polynomial of degree 13 (truncation
-   below 5e-18 relative) in Estrin's order; within 2 ulp of exp. L below
-   -708 (subnormal results) or NaN: the library's exp. */
+/* 2^(j/32), j < 32, rounded from 40 digits */
+static const double exp2_32[32] = {
+  1.0,
+  1.0218971486541166,
+  1.0442737824274138,
+  1.0671404006768237,
+  1.0905077326652577,
+  1.1143867425958924,
+  1.1387886347566916,
+  1.1637248587775775,
+  1.189207115002721,
+  1.215247359980469,
+  1.241857812073484,
+  1.2690509571917332,
+  1.2968395546510096,
+  1.3252366431597413,
+  1.3542555469368927,
+  1.383909881963832,
+  1.4142135623730951,
+  1.4451808069770467,
+  1.4768261459394993,
+  1.5091644275934228,
+  1.5422108254079407,
+  1.5759808451078865,
+  1.6104903319492543,
+  1.645755478153965,
+  1.681792830507429,
+  1.718619298122478,
+  1.7562521603732995,
+  1.7947090750031072,
+  1.8340080864093424,
+  1.8741676341103,
+  1.9152065613971474,
+  1.9571441241754002
+
+};
+
+/* e^L for the table's L (< 0.5): 2^e 2^(j/32) e^r with k = 32 e + j the
+   nearest integer to 32 L/ln 2 and r = L - k ln2/32 in [-ln2/64, ln2/64]
+   (Cody-Waite: k ln2_hi/32 is exact, ln2_hi having 32 bits), e^r by its
+   Taylor polynomial of degree 6 (truncation below 4e-18 relative); within
+   2 ulp of exp. L at or below -708 (subnormal results), above 709 or NaN:
+   the library's exp. */
 static inline double exp_table(double L)
 {
   if (!(L > -708.0 && L < 709.0)) return exp(L);
   const double shifter = 0x1.8p52;
-  const double kd = (L * 1.4426950408889634 + shifter) - shifter;   /* round(L / ln 2) */
-  const double r = fma(-kd, 1.9082149292705877e-10, fma(-kd, 6.9314718036912382e-01, L));
-  const double r2 = r * r, r4 = r2 * r2, r8 = r4 * r4;
-  const double a0 = 1.0 + r, a1 = 0.5 + r * (1.0 / 6), a2 = 1.0 / 24 + r * (1.0 / 120);
-  const double a3 = 1.0 / 720 + r * (1.0 / 5040), a4 = 1.0 / 40320 + r * (1.0 / 362880);
-  const double a5 = 1.0 / 3628800 + r * (1.0 / 39916800), a6 = 1.0 / 479001600 + r * (1.0 / 6227020800.0);
-  const double p = (a0 + a1 * r2) + (a2 + a3 * r2) * r4 + ((a4 + a5 * r2) + a6 * r4) * r8;
+  const double kd = (L * (32.0 / 0.6931471805599453) + shifter) - shifter;
+  const double r = (L - kd * (6.9314718036912382e-01 / 32)) - kd * (1.9082149292705877e-10 / 32);
+  const double r2 = r * r;
+  const double p = 1.0 + r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * ((1.0 / 24 + r * (1.0 / 120)) + r2 * (1.0 / 720)));
   const int k = (int)kd;
-  uint64_t bits = (uint64_t)(k + 1023) << 52;
+  const uint64_t bits = (uint64_t)((k >> 5) + 1023) << 52;   /* floor(k/32): arithmetic shift */
   double scale;
   memcpy(&scale, &bits, sizeof scale);
-  return p * scale;
+  return exp2_32[k & 31] * p * scale;
 }
 
 /* quintic step: 1 for z <= 0, 0 for z >= 1, and its derivative */
