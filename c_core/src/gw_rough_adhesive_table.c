@@ -11,6 +11,12 @@
 #include <string.h>
 #include "gw_rough_adhesive_table_data.h"
 
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
+
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
    against dc_jkr_geometry) */
 #define DC_GWA_UB (-0.375 * 4.60115111447049)
@@ -97,7 +103,7 @@ static const double exp2_32[32] = {
    Taylor polynomial of degree 6 (truncation below 4e-18 relative); within
    2 ulp of exp. L at or below -708 (subnormal results), above 709 or NaN:
    the library's exp. */
-static inline double exp_table(double L)
+static ALWAYS_INLINE double exp_table(double L)
 {
   if (!(L > -708.0 && L < 709.0)) return exp(L);
   const double shifter = 0x1.8p52;
@@ -184,7 +190,7 @@ static inline void cell_cubic(double v0, double s0, double v1, double s1, double
 }
 
 /* near cell i (nodes i, i + 1) at c's eta, from the memo m when there is one */
-static inline const double *near_cell(int b, int i, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
+static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
 {
   dc_gwa_table_cell *e = m ? &m->near[b][i] : NULL;
   if (e && e->gen == m->gen) return e->c;
@@ -215,14 +221,14 @@ static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, d
 }
 
 /* the cubic of a cell at t: value and d/dt */
-static inline void cubic_eval(const double *c, double t, double *v, double *dv)
+static ALWAYS_INLINE void cubic_eval(const double *c, double t, double *v, double *dv)
 {
   *v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
   *dv = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
 }
 
 /* near region: L and dL/dx at x in [X_LO, X_HI] */
-static inline void near_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
+static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
 {
   const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
   int i = (int)cx;
@@ -327,7 +333,7 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, dc_gwa_ta
 }
 
 /* G and dG/dx, unchecked, in the eta cell c */
-static inline void reduced(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
+static void reduced_any(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
 {
   if (x > DC_GWA_TABLE_X_HI || x < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) {
     reduced_beyond(b, x, c, m, G, Gx);
@@ -343,6 +349,22 @@ static inline void reduced(int b, double x, const dc_gwa_table_eta *c, dc_gwa_ta
     *G -= C;
     *Gx -= Cx;
   }
+}
+
+/* reduced_any with the common case inline: the near region above the
+   blend, without the kink term (the same operations, the same bits) */
+static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G,
+                                  double *Gx)
+{
+  if (x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
+      !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
+    double L, Lx;
+    near_interp(b, x, c, m, &L, &Lx);
+    *G = -exp_table(L);
+    *Gx = *G * Lx;
+    return;
+  }
+  reduced_any(b, x, c, m, G, Gx);
 }
 
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
@@ -377,7 +399,7 @@ int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_
 }
 
 /* branch force at overlap delta, unchecked inputs; 0 on success */
-static inline int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
+static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
                                int b, double delta, double *F, double *kn)
 {
   double x = -delta * p->inv_sigma;   /* h */
@@ -413,7 +435,7 @@ double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R)
 }
 
 /* the step, with the rows memoised in m or (m NULL) mixed at each call */
-static inline int step(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m, double delta,
+static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m, double delta,
                        double *hist, dc_gwa_table_out *o)
 {
   if (!(isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
