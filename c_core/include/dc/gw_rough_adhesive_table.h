@@ -17,7 +17,12 @@
    F_s, delta_c and tau. F_gw is the closed form of dc_gw_rough_elliptic
    (review Eqs. 31-36) for the same n_asp and sigma. For elliptic summits
    the summit law also depends on R_minor/R_major (the elliptic factor):
-   not tabulated here (use dc_gw_rough_adhesive).
+   not tabulated here (use dc_gw_rough_adhesive). No equivalent circle
+   stands in for it: the table at R = (R_major R_minor)^1/2 is 5e-5 from
+   the elliptic law's adhesive part at a ratio of 0.97, 6e-4 at 0.9, 2.6e-2
+   at 0.5, 0.27 at 0.1 (tests/reference/gwa_elliptic_factor.c); a table
+   for superquadrics needs the ratio as a third coordinate (with D and the
+   scales of the dc_jkr_geom at that ratio).
    G < 0 everywhere (every attached summit pulls more than its Hertz
    counterpart; checked at every node by the generator). Deep in
    compression G -> -pi/8 (f_JKR - f_Hertz -> -pi w R), with a u^-3/4 tail.
