@@ -75,16 +75,21 @@ typedef struct {
 int dc_gw_bound_init(const dc_hertz_geom *g, double Estar, double n_asp, double sigma, dc_gw_bound *b);
 
 /* F and kn = dF/d delta at overlap delta (finite, any sign): status and
-   results as dc_gw_rough_elliptic (outputs untouched on error). */
+   results as dc_gw_rough_elliptic (outputs untouched on error), except
+   that where only its area overflows (DC_ERANGE there) this returns F and
+   kn with DC_OK: it has no area. */
 static inline int dc_gw_bound_force(const dc_gw_bound *b, double delta, double *F, double *kn)
 {
   const double h = -delta * b->inv_sigma;
   if (h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI) {
     double F32, F12;
     dc_gw_F32_F12(h, &F32, &F12);
-    *F = b->cF * F32;
-    *kn = b->ck * F12;
-    return DC_OK;
+    const double f = b->cF * F32, k = b->ck * F12;
+    if (isfinite(f) && isfinite(k)) {
+      *F = f;
+      *kn = k;
+      return DC_OK;
+    }   /* a product overflowed: the checked form rescales or reports it */
   }
   dc_gw_rough_state s;
   const int st = dc_gw_rough_elliptic(&b->g, b->Estar, b->n_asp, b->sigma, delta, &s);
