@@ -4,6 +4,7 @@
 #include "dc/gw_integrals.h"
 #include "dc/status.h"
 #include "gw_integrals_cheb.h"
+#include "gw_F32_poly.h"
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_sf_bessel.h>
 #include <gsl/gsl_sf_erf.h>
@@ -136,6 +137,41 @@ int dc_gw_F_all(double h, double F[4])
   } else {
     for (int o = 0; o < 4; o++) F[o] = large_h(o, h);
   }
+  return DC_OK;
+}
+
+/* F_3/2 and F_1/2 from the degree-9 pieces of gw_F32_poly.h (Estrin's
+   scheme; the terms fall fast, |t| <= 1) */
+#if DC_GW_F32P_NCOEF != 10 || DC_GW_F32P_NPIECE != 104 || DC_GW_F32P_PER_UNIT != 8
+#error "gw_F32_poly.h: piece layout differs from dc_gw_F32_F12"
+#endif
+static inline double poly9(const double *c, double t, double t2, double t4)
+{
+  const double a0 = c[0] + c[1] * t, a1 = c[2] + c[3] * t, a2 = c[4] + c[5] * t;
+  const double a3 = c[6] + c[7] * t, a4 = c[8] + c[9] * t;
+  return (a0 + a1 * t2) + ((a2 + a3 * t2) + a4 * t4) * t4;
+}
+
+int dc_gw_F32_F12(double h, double *F32, double *F12)
+{
+  /* [LO, HI) = the pieces' [H_LO, H_LO + NPIECE/PER_UNIT) (test_gw_integrals) */
+  if (h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI) {
+    const double u = (h - DC_GW_F32P_H_LO) * DC_GW_F32P_PER_UNIT;
+    int p = (int)u;
+    if (p > DC_GW_F32P_NPIECE - 1) p = DC_GW_F32P_NPIECE - 1;   /* u rounded up to the end */
+    /* h - h_p exact (h_p a multiple of 1/8, |h - h_p| < 1/8 up to the
+       rounding of u): t carries no rounding of h + 10 */
+    const double t = 2.0 * DC_GW_F32P_PER_UNIT * (h - (DC_GW_F32P_H_LO + (double)p / DC_GW_F32P_PER_UNIT)) - 1.0;
+    const double t2 = t * t, t4 = t2 * t2;
+    *F32 = poly9(dc_gw_f32_poly[p][0], t, t2, t4);
+    *F12 = poly9(dc_gw_f32_poly[p][1], t, t2, t4);
+    return DC_OK;
+  }
+  double F[4];
+  const int st = dc_gw_F_all(h, F);
+  if (st != DC_OK) return st;
+  *F32 = F[DC_GW_F32];
+  *F12 = F[DC_GW_F12];
   return DC_OK;
 }
 

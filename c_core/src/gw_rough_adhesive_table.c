@@ -7,7 +7,15 @@
 #include "dc/status.h"
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "gw_rough_adhesive_table_data.h"
+
+#if defined(__GNUC__)
+#define ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define ALWAYS_INLINE inline
+#endif
 
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
    against dc_jkr_geometry) */
@@ -52,12 +60,62 @@ int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, d
   return DC_OK;
 }
 
-/* cubic Hermite on [0, 1]: value and derivative */
-static inline void hermite(double t, double f0, double d0, double f1, double d1, double *v, double *dv)
+/* 2^(j/32), j < 32, rounded from 40 digits */
+static const double exp2_32[32] = {
+  1.0,
+  1.0218971486541166,
+  1.0442737824274138,
+  1.0671404006768237,
+  1.0905077326652577,
+  1.1143867425958924,
+  1.1387886347566916,
+  1.1637248587775775,
+  1.189207115002721,
+  1.215247359980469,
+  1.241857812073484,
+  1.2690509571917332,
+  1.2968395546510096,
+  1.3252366431597413,
+  1.3542555469368927,
+  1.383909881963832,
+  1.4142135623730951,
+  1.4451808069770467,
+  1.4768261459394993,
+  1.5091644275934228,
+  1.5422108254079407,
+  1.5759808451078865,
+  1.6104903319492543,
+  1.645755478153965,
+  1.681792830507429,
+  1.718619298122478,
+  1.7562521603732995,
+  1.7947090750031072,
+  1.8340080864093424,
+  1.8741676341103,
+  1.9152065613971474,
+  1.9571441241754002
+
+};
+
+/* e^L for the table's L (< 0.5): 2^e 2^(j/32) e^r with k = 32 e + j the
+   nearest integer to 32 L/ln 2 and r = L - k ln2/32 in [-ln2/64, ln2/64]
+   (Cody-Waite: k ln2_hi/32 is exact, ln2_hi having 32 bits), e^r by its
+   Taylor polynomial of degree 6 (truncation below 4e-18 relative); within
+   2 ulp of exp. L at or below -708 (subnormal results), above 709 or NaN:
+   the library's exp. */
+static ALWAYS_INLINE double exp_table(double L)
 {
-  const double t2 = t * t, t3 = t2 * t;
-  *v = (2 * t3 - 3 * t2 + 1) * f0 + (t3 - 2 * t2 + t) * d0 + (-2 * t3 + 3 * t2) * f1 + (t3 - t2) * d1;
-  if (dv) *dv = (6 * t2 - 6 * t) * f0 + (3 * t2 - 4 * t + 1) * d0 + (-6 * t2 + 6 * t) * f1 + (3 * t2 - 2 * t) * d1;
+  if (!(L > -708.0 && L < 709.0)) return exp(L);
+  const double shifter = 0x1.8p52;
+  const double kd = (L * (32.0 / 0.6931471805599453) + shifter) - shifter;
+  const double r = (L - kd * (6.9314718036912382e-01 / 32)) - kd * (1.9082149292705877e-10 / 32);
+  const double r2 = r * r;
+  const double p = 1.0 + r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * ((1.0 / 24 + r * (1.0 / 120)) + r2 * (1.0 / 720)));
+  const int k = (int)kd;
+  const uint64_t bits = (uint64_t)((k >> 5) + 1023) << 52;   /* floor(k/32): arithmetic shift */
+  double scale;
+  memcpy(&scale, &bits, sizeof scale);
+  return exp2_32[k & 31] * p * scale;
 }
 
 /* quintic step: 1 for z <= 0, 0 for z >= 1, and its derivative */
@@ -120,48 +178,92 @@ static inline void eta_mix(const dc_gwa_table_eta *c, const double *a, const dou
   *d = c->w[0] * a[1] + c->w[1] * a[3] + c->w[2] * e[1] + c->w[3] * e[3];
 }
 
-/* near region: L and dL/dx at x in [X_LO, X_HI] */
-static inline void near_interp(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+/* The cubic Hermite polynomial of a cell from its end values v and slopes
+   s (in the cell's unit): c0 + c1 t + c2 t^2 + c3 t^3, t in [0, 1] */
+static inline void cell_cubic(double v0, double s0, double v1, double s1, double *c)
 {
+  const double dv = v1 - v0;
+  c[0] = v0;
+  c[1] = s0;
+  c[2] = 3.0 * dv - 2.0 * s0 - s1;
+  c[3] = s0 + s1 - 2.0 * dv;
+}
+
+/* near cell i (nodes i, i + 1) at c's eta, from the memo m when there is one */
+static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
+{
+  dc_gwa_table_cell *e = m ? &m->near[b][i] : NULL;
+  if (e && e->gen == m->gen) return e->c;
   const double dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
+  double v0, d0, v1, d1;
+  eta_mix(c, dc_gwa_table_near[b][c->j][i], dc_gwa_table_near[b][c->j + 1][i], &v0, &d0);
+  eta_mix(c, dc_gwa_table_near[b][c->j][i + 1], dc_gwa_table_near[b][c->j + 1][i + 1], &v1, &d1);
+  double *out = e ? e->c : tmp;
+  cell_cubic(v0, d0 * dx, v1, d1 * dx, out);
+  if (e) e->gen = m->gen;
+  return out;
+}
+
+/* deep cell k (row j's nodes k, k + 1; row j + 1's three places shallower) */
+static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
+{
+  dc_gwa_table_cell *e = m ? &m->deep[b][k] : NULL;
+  if (e && e->gen == m->gen) return e->c;
+  const double du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
+  const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
+  double v0, d0, v1, d1;
+  eta_mix(c, dc_gwa_table_deep[b][c->j][k], dc_gwa_table_deep[b][c->j + 1][k - sh], &v0, &d0);
+  eta_mix(c, dc_gwa_table_deep[b][c->j][k + 1], dc_gwa_table_deep[b][c->j + 1][k + 1 - sh], &v1, &d1);
+  double *out = e ? e->c : tmp;
+  cell_cubic(v0, d0 * du, v1, d1 * du, out);
+  if (e) e->gen = m->gen;
+  return out;
+}
+
+/* the cubic of a cell at t: value and d/dt */
+static ALWAYS_INLINE void cubic_eval(const double *c, double t, double *v, double *dv)
+{
+  *v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+  *dv = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+}
+
+/* near region: L and dL/dx at x in [X_LO, X_HI] */
+static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
+{
   const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
   int i = (int)cx;
   if (i < 0) i = 0;
   if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
-  double v0, d0, v1, d1, Lc;
-  eta_mix(c, dc_gwa_table_near[b][c->j][i], dc_gwa_table_near[b][c->j + 1][i], &v0, &d0);
-  eta_mix(c, dc_gwa_table_near[b][c->j][i + 1], dc_gwa_table_near[b][c->j + 1][i + 1], &v1, &d1);
-  hermite(cx - i, v0, d0 * dx, v1, d1 * dx, L, &Lc);
+  double tmp[4], Lc;
+  cubic_eval(near_cell(b, i, c, m, tmp), cx - i, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
 }
 
 /* deep region: bicubic in (u, eta), u = ln(-x) + eta, whose nodes on row
    j + 1 are those of row j three places shallower; x < 0 */
-static void deep_interp(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+static void deep_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *mm, double *L, double *Lx)
 {
-  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT, du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT;
   const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
   const double cu = DC_GWA_TABLE_U_PER_UNIT * (log(x / DC_GWA_TABLE_X_B) + c->ue * de) - DC_GWA_TABLE_K_MIN;
   int m = (int)cu;
   if (m < sh) m = sh;
   if (m > DC_GWA_TABLE_NDEEP - 2) m = DC_GWA_TABLE_NDEEP - 2;
-  double v0, d0, v1, d1, Lc;
-  eta_mix(c, dc_gwa_table_deep[b][c->j][m], dc_gwa_table_deep[b][c->j + 1][m - sh], &v0, &d0);
-  eta_mix(c, dc_gwa_table_deep[b][c->j][m + 1], dc_gwa_table_deep[b][c->j + 1][m + 1 - sh], &v1, &d1);
-  hermite(cu - m, v0, d0 * du, v1, d1 * du, L, &Lc);
+  double tmp[4], Lc;
+  cubic_eval(deep_cell(b, m, c, mm, tmp), cu - m, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_U_PER_UNIT / x;
 }
 
 /* L = ln(-T) and dL/dx on the table's x range */
-static inline void table_L(int b, double x, const dc_gwa_table_eta *c, double *L, double *Lx)
+static inline void table_L(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
 {
-  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, c, L, Lx); return; }
-  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, c, L, Lx); return; }
+  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, c, m, L, Lx); return; }
+  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, c, m, L, Lx); return; }
   double Ln, Lnx, Ld, Ldx, dw;
   const double bl = DC_GWA_TABLE_BLEND_HI - DC_GWA_TABLE_BLEND_LO;
   const double w = step_down((x - DC_GWA_TABLE_BLEND_LO) / bl, &dw);   /* weight of deep */
-  near_interp(b, x, c, &Ln, &Lnx);
-  deep_interp(b, x, c, &Ld, &Ldx);
+  near_interp(b, x, c, m, &Ln, &Lnx);
+  deep_interp(b, x, c, m, &Ld, &Ldx);
   *L = Ln + w * (Ld - Ln);
   *Lx = Lnx + w * (Ldx - Lnx) + dw / bl * (Ld - Ln);
 }
@@ -205,12 +307,12 @@ static void summit_g(double d, double *g, double *gd)
 }
 
 /* G and dG/dx beyond the table (x > X_HI, x < x_end), unchecked */
-static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *G, double *Gx)
+static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
 {
   double L, Lx;
   if (x > DC_GWA_TABLE_X_HI) {
     /* L continued linearly (C1); the kink term vanishes here */
-    near_interp(b, DC_GWA_TABLE_X_HI, c, &L, &Lx);
+    near_interp(b, DC_GWA_TABLE_X_HI, c, m, &L, &Lx);
     *G = -exp(L + Lx * (x - DC_GWA_TABLE_X_HI));
     *Gx = *G * Lx;
     return;
@@ -219,7 +321,7 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *G
   const double x_end = dc_gwa_table_x_deep(DC_GWA_TABLE_K_END);
   const double tau = exp(c->eta), shift = b == DC_GW_UNLOADING ? DC_GWA_UB : 0.0;
   double g, gd, g0, gd0, C = 0.0, Cx;
-  deep_interp(b, x_end, c, &L, &Lx);
+  deep_interp(b, x_end, c, m, &L, &Lx);
   if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x_end, c->eta, &C, &Cx);
   const double d = -tau * x + shift;
   if (!(d <= DBL_MAX)) { *G = -M_PI / 8.0; *Gx = 0.0; return; }   /* beyond the doubles: the limit g = -pi/8 */
@@ -231,15 +333,15 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *G
 }
 
 /* G and dG/dx, unchecked, in the eta cell c */
-static inline void reduced(int b, double x, const dc_gwa_table_eta *c, double *G, double *Gx)
+static void reduced_any(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
 {
   if (x > DC_GWA_TABLE_X_HI || x < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) {
-    reduced_beyond(b, x, c, G, Gx);
+    reduced_beyond(b, x, c, m, G, Gx);
     return;
   }
   double L, Lx;
-  table_L(b, x, c, &L, &Lx);
-  *G = -exp(L);
+  table_L(b, x, c, m, &L, &Lx);
+  *G = -exp_table(L);
   *Gx = *G * Lx;
   if (b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI) {
     double C, Cx;
@@ -249,13 +351,29 @@ static inline void reduced(int b, double x, const dc_gwa_table_eta *c, double *G
   }
 }
 
+/* reduced_any with the common case inline: the near region above the
+   blend, without the kink term (the same operations, the same bits) */
+static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G,
+                                  double *Gx)
+{
+  if (x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
+      !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
+    double L, Lx;
+    near_interp(b, x, c, m, &L, &Lx);
+    *G = -exp_table(L);
+    *Gx = *G * Lx;
+    return;
+  }
+  reduced_any(b, x, c, m, G, Gx);
+}
+
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
 {
   if (!(isfinite(x) && isfinite(eta) && (branch == DC_GW_LOADING || branch == DC_GW_UNLOADING))) return DC_EDOM;
   dc_gwa_table_eta c;
   eta_cell(eta, &c);
   double g, gx;
-  reduced(branch, x, &c, &g, &gx);
+  reduced(branch, x, &c, NULL, &g, &gx);
   if (!(isfinite(g) && isfinite(gx))) return DC_ERANGE;
   *G = g;
   *dGdx = gx;
@@ -281,8 +399,8 @@ int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_
 }
 
 /* branch force at overlap delta, unchecked inputs; 0 on success */
-static inline int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, int b, double delta,
-                        double *F, double *kn)
+static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
+                               int b, double delta, double *F, double *kn)
 {
   double x = -delta * p->inv_sigma;   /* h */
   if (b == DC_GW_UNLOADING) {
@@ -290,7 +408,7 @@ static inline int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_ra
     if (isnan(x)) x = -(delta + r->D * p->sigma) * p->inv_sigma;   /* h and D both overflowed: summed first */
   }
   double G, Gx;
-  reduced(b, x, &r->cell, &G, &Gx);
+  reduced(b, x, &r->cell, m, &G, &Gx);
   *F = r->Fs * G;
   *kn = -r->Fs * Gx * p->inv_sigma;
   return isfinite(*F) && isfinite(*kn) ? DC_OK : DC_ERANGE;
@@ -305,7 +423,7 @@ int dc_gwa_table_force(const dc_gwa_table_pair *p, double R, int branch, double 
   const int st = dc_gwa_table_radius_init(p, R, &r);
   if (st != DC_OK) return st;
   double f, k;
-  if (branch_force(p, &r, branch, delta, &f, &k) != DC_OK) return DC_ERANGE;
+  if (branch_force(p, &r, NULL, branch, delta, &f, &k) != DC_OK) return DC_ERANGE;
   *F = f;
   *kn = k;
   return DC_OK;
@@ -316,8 +434,9 @@ double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R)
   return -p->ub * p->dc_coef * cbrt(R) + DC_GWA_TABLE_X_HI * p->sigma;
 }
 
-int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double delta, double *hist,
-                             dc_gwa_table_out *o)
+/* the step, with the rows memoised in m or (m NULL) mixed at each call */
+static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m, double delta,
+                       double *hist, dc_gwa_table_out *o)
 {
   if (!(isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
   if (p->w == 0.0) { o->F = 0.0; o->kn = 0.0; o->weight = 0.0; return DC_OK; }
@@ -328,15 +447,15 @@ int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radi
   const double xi = (dmax - delta) / db;
   double F, kn, wgt;
   if (!(xi > 0.0)) {
-    if (branch_force(p, r, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, m, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 0.0;
   } else if (xi >= 1.0) {
-    if (branch_force(p, r, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, m, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 1.0;
   } else {
     double FL, kL, FU, kU;
-    if (branch_force(p, r, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
-    if (branch_force(p, r, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, m, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, m, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
     wgt = xi * xi * (3.0 - 2.0 * xi);
     const double dw = -6.0 * xi * (1.0 - xi) / db;   /* dw/d delta */
     F = FL + wgt * (FU - FL);
@@ -349,6 +468,33 @@ int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radi
   else { hist[0] = 1.0; hist[1] = dmax; }
   o->F = F; o->kn = kn; o->weight = wgt;
   return DC_OK;
+}
+
+int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double delta, double *hist,
+                             dc_gwa_table_out *o)
+{
+  return step(p, r, NULL, delta, hist, o);
+}
+
+void dc_gwa_table_memo_init(dc_gwa_table_memo *m)
+{
+  memset(m, 0, sizeof *m);
+  m->eta = NAN;
+}
+
+int dc_gwa_table_step_memo(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
+                           double delta, double *hist, dc_gwa_table_out *o)
+{
+  if (!(m->eta == r->cell.eta) || m->gen == 0) {
+    /* a new eta cell (or a memo never used): every node stale */
+    if (++m->gen == 0) {   /* the generations wrapped: clear them */
+      memset(m->near, 0, sizeof m->near);
+      memset(m->deep, 0, sizeof m->deep);
+      m->gen = 1;
+    }
+    m->eta = r->cell.eta;
+  }
+  return step(p, r, m, delta, hist, o);
 }
 
 int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)

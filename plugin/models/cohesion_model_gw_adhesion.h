@@ -24,6 +24,7 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 
 #include <cstdio>
 #include <cstring>
+#include <memory>
 #include <vector>
 #include "atom.h"
 #include "cohesion_model_base.h"
@@ -75,6 +76,8 @@ public:
     ntypes = registry.max_type();
     pairs.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_pair());
     radii.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_radius());
+    memos.clear();
+    memos.resize((ntypes + 1) * (ntypes + 1));
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
         const double sigma = dc_gw_roughness_combine(s[i], s[j]);
@@ -141,8 +144,10 @@ private:
         error->one(FLERR, msg);
       }
     }
+    /* the table's cells at this radius, memoised per type pair */
+    if (!memos[k]) memos[k].reset(new dc_gwa_table_memo());
     dc_gwa_table_out o;
-    const int st = dc_gwa_table_step_radius(&p, &rad, delta, h, &o);
+    const int st = dc_gwa_table_step_memo(&p, &rad, memos[k].get(), delta, h, &o);
     if (st != DC_OK) {
       char msg[256];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
@@ -173,6 +178,7 @@ private:
   int history_offset, ntypes;
   std::vector<dc_gwa_table_pair> pairs;
   std::vector<dc_gwa_table_radius> radii;
+  std::vector<std::unique_ptr<dc_gwa_table_memo> > memos;   /* allocated on a pair's first step */
 };
 
 }

@@ -106,6 +106,7 @@ public:
     dc_param_error err;
     if (gwElliptic) {
       sphereGeom.assign((ntypes + 1) * (ntypes + 1), dc_hertz_geom());
+      sphereBound.assign((ntypes + 1) * (ntypes + 1), dc_gw_bound());
       registry.registerProperty("asperityCount", &createAsperityCount, caller);
       registry.connect("asperityCount", n_asp, caller);
       for (int i = 1; i <= ntypes; i++)
@@ -189,9 +190,14 @@ private:
       superquadricGeometry(sidata, g, ax);
       reff = g.Rc;
     } else if (gwElliptic && sigma != 0.0) {
-      /* the circle's geometry, kept per type pair while reff repeats */
+      /* the circle's geometry and the closed form bound to it, kept per
+         type pair while reff repeats */
       dc_hertz_geom &c = sphereGeom[itype * (ntypes + 1) + jtype];
-      if (c.R_major != reff) hertzGeometry(reff, reff, c);
+      if (c.R_major != reff) {
+        hertzGeometry(reff, reff, c);
+        if (!gwPlastic && dc_gw_bound_init(&c, Y, n_asp[itype][jtype], sigma, &sphereBound[itype * (ntypes + 1) + jtype]) != DC_OK)
+          sphereBound[itype * (ntypes + 1) + jtype].sigma = 0.0;   /* the products overflow: the checked form */
+      }
       g = c;
     }
     if (delta > 0.0)   /* the smooth bodies' Hertz semi-axis: a^2 = 2 R_major delta D / K, spheres R delta */
@@ -203,17 +209,22 @@ private:
       P = kn * delta;
     } else {
       if (gwElliptic) {
-        dc_gw_rough_state s;
-        const int st = gwPlastic ? dc_gw_rough_plastic(&g, Y, &plastic[itype * (ntypes + 1) + jtype],
-                                                       n_asp[itype][jtype], sigma, delta, &s)
-                                 : dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+        const dc_gw_bound *bound = sq || gwPlastic ? NULL : &sphereBound[itype * (ntypes + 1) + jtype];
+        int st;
+        if (bound && bound->sigma != 0.0) {
+          st = dc_gw_bound_force(bound, delta, &P, &Sn);
+        } else {
+          dc_gw_rough_state s;
+          st = gwPlastic ? dc_gw_rough_plastic(&g, Y, &plastic[itype * (ntypes + 1) + jtype],
+                                               n_asp[itype][jtype], sigma, delta, &s)
+                         : dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+          if (st == DC_OK) { P = s.F; Sn = s.kn; }
+        }
         if (st != DC_OK) {
           char msg[256];
           snprintf(msg, sizeof msg, "overlap %g, roughness %g, radius %g: %s", delta, sigma, reff, dc_status_str(st));
           stop(false, msg);
         }
-        P = s.F;
-        Sn = s.kn;
       } else {
         dc_gw_sphere_pair_force(&laws[itype * (ntypes + 1) + jtype], sqrt(reff), delta, &P, &Sn);
       }
@@ -259,6 +270,7 @@ private:
   int sphereLaw;   /* DC_GW_SPHERE_* */
   std::vector<dc_gw_sphere_pair> laws;
   std::vector<dc_hertz_geom> sphereGeom;   /* gwElliptic on, spheres: per type pair */
+  std::vector<dc_gw_bound> sphereBound;    /* the closed form bound to sphereGeom (sigma = 0: not bound) */
   std::vector<dc_gw_plastic_params> plastic;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;

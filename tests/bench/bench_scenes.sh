@@ -104,6 +104,10 @@ row(lambda sh5, sr: "    same contact distance (1.09): stock hertz %.3f s; gw_ro
 row(lambda sra, sr, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
     "%.3f s = %.4f x gw_rough (default law, 1.09), %.4f x gw_rough (default law, 1.12), %.4f x gw_rough gwElliptic on (1.12)"
     % (sra, sra / sr, sra / sr2, sra / sre), "sra", "sr", "sr2", "sre")
+if "sr" not in t:
+    row(lambda sra, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
+        "%.3f s = %.4f x gw_rough (default law, %.3f s), %.4f x gw_rough gwElliptic on (%.3f s)"
+        % (sra, sra / sr2, sr2, sra / sre, sre), "sra", "sr2", "sre")
 row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
     "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1), "sh1", "sr0")
 row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")

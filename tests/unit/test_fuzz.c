@@ -695,15 +695,33 @@ static void fuzz_gw_integrals(void)
   }
   fz_done(f);
   f = fz_new("dc_gw_F_all");
+  fz_fn *f2 = fz_new("dc_gw_F32_F12");
+  f2->seconds = 0.0;
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
     const double h = A(gw_h());
     double F[4];
     SENTINEL(F);
-    FZ_CHECK(f, dc_gw_F_all(h, F), !isfinite(h), isfinite(h) && h >= DC_GW_H_MIN, UNTOUCHED(F), FIN(F),
+    const int st = dc_gw_F_all(h, F);
+    FZ_CHECK(f, st, !isfinite(h), isfinite(h) && h >= DC_GW_H_MIN, UNTOUCHED(F), FIN(F),
              "h %.17g", h);
+    /* at the same h (no draws of its own): the same status; F_3/2 and
+       F_1/2 within 1e-15 on the pieces, the same bits off them */
+    double q[2];
+    SENTINEL(q);
+    f2->seconds -= fz_now();
+    const int s2 = dc_gw_F32_F12(h, &q[0], &q[1]);
+    f2->seconds += fz_now();
+    f2->calls++;
+    const int piece = h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI;
+    FZ_EXPECT(f2, s2 == st && (st != DC_OK ? UNTOUCHED(q)
+                                           : piece ? fabs(q[0] - F[DC_GW_F32]) <= 1e-15 * F[DC_GW_F32] &&
+                                                         fabs(q[1] - F[DC_GW_F12]) <= 1e-15 * F[DC_GW_F12]
+                                                   : q[0] == F[DC_GW_F32] && q[1] == F[DC_GW_F12]),
+              "differs from dc_gw_F_all", "h %.17g: status %d vs %d, %.17g %.17g", h, s2, st, q[0], q[1]);
   }
   fz_done(f);
+  fz_done(f2);
   f = fz_new("dc_gw_F_closed");
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
@@ -760,6 +778,31 @@ static void fuzz_gw_rough(void)
     FZ_CHECK(f, st, bad, dom, UNTOUCHED(s), FIN(s),
              "R_major %.17g R_minor %.17g Estar %.17g n_asp %.17g sigma %.17g delta %.17g", g->R_major, g->R_minor,
              E, n, sg, d);
+    /* the closed form bound to the geometry: the same status, the same
+       result off the pieces of dc_gw_F32_F12, within 1e-14 on them */
+    dc_gw_bound b;
+    SENTINEL(b);
+    const int sb = dc_gw_bound_init(g, E, n, sg, &b);
+    FZ_EXPECT(f, sb == DC_OK || UNTOUCHED(b), "dc_gw_bound_init wrote *b on error", "status %d", sb);
+    FZ_EXPECT(f, sb != DC_EDOM || !(dom && sg > 0.0), "dc_gw_bound_init: DC_EDOM inside the domain",
+              "Estar %.17g n_asp %.17g sigma %.17g", E, n, sg);
+    if (sb == DC_OK && !bad) {
+      double q[2];
+      SENTINEL(q);
+      const int sq = dc_gw_bound_force(&b, d, &q[0], &q[1]);
+      const double hb = -d * b.inv_sigma;
+      const int piece = hb >= DC_GW_F32P_LO && hb < DC_GW_F32P_HI;
+      /* (dc_gw_rough_elliptic's DC_ERANGE may come from the area alone,
+         which the bound form does not compute) */
+      FZ_EXPECT(f, (sq == st || (piece && st == DC_ERANGE && sq == DC_OK && FIN(q))) &&
+                       (sq != DC_OK ? UNTOUCHED(q)
+                        : st != DC_OK ? 1
+                        : piece ? fabs(q[0] - s.F) <= 1e-14 * s.F && fabs(q[1] - s.kn) <= 1e-14 * s.kn
+                                : q[0] == s.F && q[1] == s.kn),
+                "dc_gw_bound_force differs from dc_gw_rough_elliptic",
+                "R_major %.17g R_minor %.17g Estar %.17g n_asp %.17g sigma %.17g delta %.17g: status %d vs %d, "
+                "%.17g %.17g vs %.17g %.17g", g->R_major, g->R_minor, E, n, sg, d, sq, st, q[0], q[1], s.F, s.kn);
+    }
     if (st == DC_ERANGE) {
       /* bound: sigma^(3/2) F_3/2(h) <= (sigma + |delta|)^3/2 F_3/2(0) 2^3/2
          and the like; the Hertz bound for the smooth limit */
@@ -3028,6 +3071,15 @@ static void fuzz_gwa_table(void)
     SENTINEL(o2);
     const int sr = dc_gwa_table_radius_init(p, R, &rr);
     const int st2 = sr == DC_OK ? dc_gwa_table_step_radius(p, &rr, d, hist2, &o2) : sr;
+    /* and with the cells memoised (one memo across every pair and radius) */
+    static dc_gwa_table_memo memo;
+    dc_gwa_table_out o3;
+    double hist3[2] = {h0[0], h0[1]};
+    SENTINEL(o3);
+    const int st3 = sr == DC_OK ? dc_gwa_table_step_memo(p, &rr, &memo, d, hist3, &o3) : sr;
+    FZ_EXPECT(f, st3 == st2 && !memcmp(&o3, &o2, sizeof o2) && !memcmp(hist3, hist2, sizeof hist2),
+              "dc_gwa_table_step_memo differs from dc_gwa_table_step_radius",
+              GWA_FMT " delta %.17g: status %d vs %d", GWA_ARGS(p, R), d, st3, st2);
     const int st = dc_gwa_table_step(p, R, d, hist, &o);
     FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(hist, h0, sizeof hist),
              FIN(o) && o.F <= 0.0 && o.weight >= 0.0 && o.weight <= 1.0 && fin(hist, 2),

@@ -124,9 +124,62 @@ static void limits(void)
   CHECK(dc_gw_F_all(NAN, (double[4]){0}) == DC_EDOM);
 }
 
+/* dc_gw_F32_F12: the degree-9 pieces against the mpmath table (every row
+   in their range) and against dc_gw_F_all densely (every piece, its ends
+   and 40 points inside), dc_gw_F_all outside, the domain. */
+static void f32_pieces(void)
+{
+  double worst_table = 0, worst_dense[2] = {0, 0};
+  FILE *f = check_open_reference("gw_integrals.csv");
+  if (f) {
+    double row[3];
+    int rows = 0;
+    check_read_row(f, row, 3);
+    while (check_read_row(f, row, 3) == 3) {
+      const int order = (int)(2 * row[0] + 0.5);
+      const double h = row[1];
+      if (!(order == 1 || order == 3) || !(h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI)) continue;
+      double a, b;
+      CHECK(dc_gw_F32_F12(h, &a, &b) == DC_OK);
+      worst_table = fmax(worst_table, fabs((order == 3 ? a : b) / row[2] - 1));
+      rows++;
+    }
+    fclose(f);
+    CHECK(rows >= 60);
+  }
+  for (int p = 0; p < 104; p++)
+    for (int k = 0; k <= 41; k++) {
+      double h = DC_GW_F32P_LO + (p + k / 41.0) / 8.0;
+      if (k == 41) h = nextafter(h, -INFINITY);   /* the piece's last double */
+      if (h >= DC_GW_F32P_HI) continue;
+      double a, b, Fa[4];
+      CHECK(dc_gw_F32_F12(h, &a, &b) == DC_OK);
+      CHECK(dc_gw_F_all(h, Fa) == DC_OK);
+      worst_dense[0] = fmax(worst_dense[0], fabs(a / Fa[DC_GW_F32] - 1));
+      worst_dense[1] = fmax(worst_dense[1], fabs(b / Fa[DC_GW_F12] - 1));
+    }
+  printf("dc_gw_F32_F12 on [%g, %g): vs mpmath %.2e; vs dc_gw_F_all F_3/2 %.2e, F_1/2 %.2e\n",
+         DC_GW_F32P_LO, DC_GW_F32P_HI, worst_table, worst_dense[0], worst_dense[1]);
+  /* coefficients 1.2e-16 (gen_gw_F32_poly.py) plus the evaluation's rounding;
+     dc_gw_F_all is itself within 8e-16 of mpmath */
+  CHECK_ABS(worst_table, 0.0, 4e-16, "dc_gw_F32_F12 vs mpmath");
+  CHECK_ABS(worst_dense[0], 0.0, 1e-15, "dc_gw_F32_F12 F_3/2 vs dc_gw_F_all");
+  CHECK_ABS(worst_dense[1], 0.0, 1e-15, "dc_gw_F32_F12 F_1/2 vs dc_gw_F_all");
+  /* outside the pieces: dc_gw_F_all's bits; the domain */
+  const double out[] = {-1e100, -10.000000000000002, 3.0, 7.5, 50.0};
+  for (int k = 0; k < 5; k++) {
+    double a, b, Fa[4];
+    CHECK(dc_gw_F32_F12(out[k], &a, &b) == DC_OK && dc_gw_F_all(out[k], Fa) == DC_OK);
+    CHECK(a == Fa[DC_GW_F32] && b == Fa[DC_GW_F12]);
+  }
+  double a = 7.0, b = 7.0;
+  CHECK(dc_gw_F32_F12(NAN, &a, &b) == DC_EDOM && dc_gw_F32_F12(-1e101, &a, &b) == DC_EDOM && a == 7.0 && b == 7.0);
+}
+
 int main(void)
 {
   table();
+  f32_pieces();
   identities();
   limits();
   return check_summary("gw_integrals");

@@ -106,5 +106,44 @@ int main(void)
     }
   }
   CHECK(bad == 0);
+
+  /* dc_gw_bound_force against dc_gw_rough_elliptic: within the pieces of
+     dc_gw_F32_F12 (h in [-10, 3)) to its accuracy, elsewhere the same bits;
+     the same status; the init's domain */
+  double worst_F = 0.0, worst_k = 0.0;
+  for (int c = 0; c < 3; c++) {
+    const double Rs[][2] = {{7.5e-4, 7.5e-4}, {1e-3, 2e-4}, {1.0, 1.0}};
+    CHECK(dc_hertz_geometry(Rs[c][0], Rs[c][1], &g) == DC_OK);
+    dc_gw_bound b;
+    CHECK(dc_gw_bound_init(&g, 2.7e6, 3.0, 2.1e-5, &b) == DC_OK);
+    for (int k = 0; k <= 20000; k++) {
+      const double h = -12.0 + 17.0 * k / 20000.0, d = -h * 2.1e-5;
+      double F = 0.0, kn = 0.0;
+      CHECK(dc_gw_bound_force(&b, d, &F, &kn) == DC_OK);
+      CHECK(dc_gw_rough_elliptic(&g, 2.7e6, 3.0, 2.1e-5, d, &rs) == DC_OK);
+      if (h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI) {
+        worst_F = fmax(worst_F, fabs(F / rs.F - 1));
+        worst_k = fmax(worst_k, fabs(kn / rs.kn - 1));
+      } else if (!(fabs(-d * b.inv_sigma - h) < 1e-12 && (-d * b.inv_sigma < DC_GW_F32P_LO) != (h < DC_GW_F32P_LO))) {
+        CHECK(F == rs.F && kn == rs.kn);
+      }
+    }
+    double F = 1.0, kn = 1.0;
+    CHECK(dc_gw_bound_force(&b, NAN, &F, &kn) == DC_EDOM && F == 1.0 && kn == 1.0);
+  }
+  printf("dc_gw_bound_force vs dc_gw_rough_elliptic, h in [-10, 3): F %.2e, kn %.2e\n", worst_F, worst_k);
+  /* measured 2.4e-15 and 2.0e-15: h = -delta (1/sigma) rounds twice, h =
+     -delta/sigma once, and F_3/2 near h = 3 amplifies an ulp of h ~13 fold */
+  CHECK_ABS(worst_F, 0.0, 4e-15, "bound closed form: force");
+  CHECK_ABS(worst_k, 0.0, 4e-15, "bound closed form: stiffness");
+  dc_gw_bound b0, b1;
+  memset(&b0, 0, sizeof b0);
+  b1 = b0;
+  CHECK(dc_gw_bound_init(&g, 1e9, 1.0, 0.0, &b1) == DC_EDOM);
+  CHECK(dc_gw_bound_init(&g, 1e9, -1.0, 1e-7, &b1) == DC_EDOM);
+  CHECK(dc_gw_bound_init(&g, NAN, 1.0, 1e-7, &b1) == DC_EDOM);
+  CHECK(dc_gw_bound_init(&g, 1e9, 1.0, 1e-320, &b1) == DC_ERANGE);
+  CHECK(dc_gw_bound_init(&g, 1e300, 1e300, 1e-7, &b1) == DC_ERANGE);
+  CHECK(memcmp(&b0, &b1, sizeof b0) == 0);
   return check_summary("gw_rough");
 }

@@ -76,6 +76,17 @@ int dc_gw_F(int order, double h, double *F);
 /* All four F_0, F_1/2, F_1, F_3/2 at once (shares the exp); F[order]. */
 int dc_gw_F_all(double h, double F[4]);
 
+/* F_3/2 and F_1/2 at once, for the GW closed form's force and stiffness
+   (dc_gw_bound_force, dc/gw_rough.h): on DC_GW_F32P_LO <= h <
+   DC_GW_F32P_HI from polynomials of degree 9 on pieces of width 1/8
+   (c_core/src/gw_F32_poly.h, tests/reference/gen_gw_F32_poly.py, from
+   mpmath): relative error 1.2e-16 in the coefficients, below 3e-16 as
+   evaluated (tests/unit/test_gw_integrals.c, against the committed mpmath
+   table and dc_gw_F_all), about a quarter of dc_gw_F_all's instructions;
+   elsewhere dc_gw_F_all. Domain and status as dc_gw_F_all. */
+#define DC_GW_F32P_LO (-10.0)
+#define DC_GW_F32P_HI 3.0
+int dc_gw_F32_F12(double h, double *F32, double *F12);
 /* F_n(h) from the closed forms (erfc; GSL Bessel K_nu, I_nu), same domain.
    For |h| < 1e-20 the h = 0 values (exact to rounding: the Bessel forms
    fail where h^2/4 underflows); DC_ERANGE, output untouched, if GSL

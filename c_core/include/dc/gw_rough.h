@@ -23,15 +23,19 @@
 
    The review builds the summit-scale law on the body-scale Rc (Eq. 31 puts
    Rc where the GW model has the summit radius): the law is implemented as
-   printed, and n_asp absorbs the summit density. Hot path: no allocation. */
+   printed, and n_asp absorbs the summit density. Hot path: no allocation;
+   for a geometry that repeats, dc_gw_bound_force (F_3/2 and F_1/2 from
+   degree-9 pieces, ~100 instructions against ~500 here). */
 #ifndef DC_GW_ROUGH_H
 #define DC_GW_ROUGH_H
 
 #include <float.h>
 #include <math.h>
 #include "dc/feng_rough.h"
+#include "dc/gw_integrals.h"
 #include "dc/gw_rough_table.h"
 #include "dc/hertz_elliptic.h"
+#include "dc/status.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -50,6 +54,50 @@ typedef struct {
    on DC_OK. g: from dc_hertz_geometry. */
 int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
                          double sigma, double delta, dc_gw_rough_state *s);
+
+/* The closed form bound to one geometry, material pair and sigma > 0, for
+   contacts whose geometry repeats (spheres of one size per type pair, a
+   sphere on walls): the products of dc_gw_rough_elliptic formed once, in
+   its order, so F and kn differ from it only by F_3/2 and F_1/2 from
+   dc_gw_F32_F12 (dc/gw_integrals.h: within 3e-16 relative) on
+   -10 <= h < 3, the range of settled and approaching contacts; elsewhere
+   dc_gw_rough_elliptic itself. About a fifth of its instructions. */
+typedef struct {
+  dc_hertz_geom g;
+  double Estar, n_asp, sigma;
+  double inv_sigma;
+  double cF;   /* n_asp 4/3 E* Rc^1/2 sigma^3/2 gamma */
+  double ck;   /* n_asp 2 E* Rc^1/2 sigma^1/2 gamma */
+} dc_gw_bound;
+
+/* Domain of dc_gw_rough_elliptic with sigma > 0 (DC_EDOM); DC_ERANGE when
+   1/sigma, cF or ck is not a finite normal number. *b untouched on error. */
+int dc_gw_bound_init(const dc_hertz_geom *g, double Estar, double n_asp, double sigma, dc_gw_bound *b);
+
+/* F and kn = dF/d delta at overlap delta (finite, any sign): status and
+   results as dc_gw_rough_elliptic (outputs untouched on error), except
+   that where only its area overflows (DC_ERANGE there) this returns F and
+   kn with DC_OK: it has no area. */
+static inline int dc_gw_bound_force(const dc_gw_bound *b, double delta, double *F, double *kn)
+{
+  const double h = -delta * b->inv_sigma;
+  if (h >= DC_GW_F32P_LO && h < DC_GW_F32P_HI) {
+    double F32, F12;
+    dc_gw_F32_F12(h, &F32, &F12);
+    const double f = b->cF * F32, k = b->ck * F12;
+    if (isfinite(f) && isfinite(k)) {
+      *F = f;
+      *kn = k;
+      return DC_OK;
+    }   /* a product overflowed: the checked form rescales or reports it */
+  }
+  dc_gw_rough_state s;
+  const int st = dc_gw_rough_elliptic(&b->g, b->Estar, b->n_asp, b->sigma, delta, &s);
+  if (st != DC_OK) return st;
+  *F = s.F;
+  *kn = s.kn;
+  return DC_OK;
+}
 
 /* rms summit height of a contact of two rough surfaces with rms summit
    heights sigma_i, sigma_j >= 0 (independent Gaussian heights):
