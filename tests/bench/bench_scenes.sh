@@ -20,6 +20,7 @@
 # each on a quiet machine); every timed run starts from that restart, so
 # "Loop time" is the settled segment alone. DC_BENCH_PREP=DIR keeps the
 # restart files in DIR and reuses them in a later invocation.
+# DC_BENCH_MPIRUN="--bind-to none" (for example) passes options to mpirun.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lmp="$root/build/bin/liggghts"
@@ -97,7 +98,7 @@ for c in "${configs[@]}"; do
   [ -s "$rf" ] && continue
   d="$work/prep_$name"; mkdir -p "$d"; cd "$d"
   echo "preparing $(basename "$rf") (untimed)" >&2
-  mpirun -np 2 "$lmp" -in "$deck" -var model "$model" -var prep 1 -var rfile "$rf" -log log > screen.txt 2>&1 \
+  mpirun ${DC_BENCH_MPIRUN:-} -np 2 "$lmp" -in "$deck" -var model "$model" -var prep 1 -var rfile "$rf" -log log > screen.txt 2>&1 \
     || { echo "preparation of $rf failed, see below" >&2; tail -20 screen.txt >&2; exit 1; }
 done
 base=${DC_BENCH_BASELINE:-}
@@ -111,7 +112,7 @@ for r in $(seq "$reps"); do
       [ "$which" = base ] && { exe=$base; key="base_$name"; }
       d="$work/${key}_$r"; mkdir -p "$d"; cd "$d"
       if [ "$ranks" -gt 1 ]; then
-        mpirun -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+        mpirun ${DC_BENCH_MPIRUN:-} -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
       else
         "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
       fi
