@@ -17,6 +17,11 @@ sq_<model>.restart, the same names as bench_scenes.sh uses with
 DC_BENCH_PREP=PREPDIR; missing ones are prepared (untimed, 2 ranks).
 --knobs also runs the user's settings against the chosen ones: processor
 grid along y or z, neighbour skin, `neigh_modify every`.
+--instructions N also counts the instructions of N timed steps under
+valgrind's callgrind (collected inside Verlet::run only) on 1 and 2 ranks,
+those of the MPI libraries (the waiting ranks' polling among them) apart:
+the work's speed-up in instructions, independent of the load; needs
+valgrind, takes a few minutes for N = 200.
 """
 import argparse
 import os
@@ -80,6 +85,38 @@ def contacts(path, cut):
     return below, above, across
 
 
+MPI_OBJ = re.compile(r"libmpi|libopen-|mca_|pmix|hwloc|libevent|libfabric|libuc[pst]")
+
+
+def instructions(deck, base, wd):
+    """Instructions inside Verlet::run: [(total, in MPI libraries)] for 1
+    rank, then for each of 2 ranks."""
+    vg = ["valgrind", "--tool=callgrind", "--toggle-collect=LAMMPS_NS::Verlet::run(int)"]
+    args = ["-in", deck, "-log", "log"] + base
+    out = []
+    for ranks in (1, 2):
+        d = os.path.join(wd, "callgrind%d" % ranks)
+        os.makedirs(d)
+        cmd = ([] if ranks == 1 else ["mpirun", "-np", "2"]) + vg + \
+            ["--callgrind-out-file=cg.%q{OMPI_COMM_WORLD_RANK}.out" if ranks == 2 else "--callgrind-out-file=cg.0.out",
+             LMP] + args
+        with open(os.path.join(d, "screen.txt"), "w") as f:
+            if subprocess.call(cmd, cwd=d, stdout=f, stderr=subprocess.STDOUT, env=ENV):
+                sys.exit("callgrind run failed: see %s/screen.txt" % d)
+        for r in range(ranks):
+            ann = subprocess.check_output(["callgrind_annotate", "--inclusive=no", "--threshold=100",
+                                           os.path.join(d, "cg.%d.out" % r)]).decode()
+            tot = mpi = 0
+            for line in ann.split("\n"):
+                m = re.match(r"\s*([\d,]+) \(\s*[\d.]+%\)\s+.*\[(.*)\]\s*$", line)
+                if m:
+                    n = int(m.group(1).replace(",", ""))
+                    tot += n
+                    mpi += n if MPI_OBJ.search(m.group(2)) else 0
+            out.append((tot, mpi))
+    return out
+
+
 HOOK = """compute dcpl all pair/gran/local pos id force
 dump dcpl all local 100000000 contacts.local c_dcpl[1] c_dcpl[2] c_dcpl[3] c_dcpl[4] c_dcpl[5] c_dcpl[6] &
      c_dcpl[7] c_dcpl[8] c_dcpl[9] c_dcpl[10] c_dcpl[11] c_dcpl[12]
@@ -95,6 +132,7 @@ def main():
     ap.add_argument("--models", default="hertz,hertz_elliptic")
     ap.add_argument("--scenes", default="ss,sq")
     ap.add_argument("--knobs", action="store_true")
+    ap.add_argument("--instructions", type=int, default=0, metavar="N")
     a = ap.parse_args()
     work = tempfile.mkdtemp(prefix="scaling_")
     prep = a.prepdir or os.path.join(work, "prep")
@@ -153,6 +191,16 @@ def main():
                       % (ranks, "" if ranks == 1 else "s", r["loop"], r["Pair"], r["Neigh"], r["Comm"],
                          r["Outpt"], r["Other"]))
             print("  measured speed-up (one pair of runs, load-dependent): %.3f" % (r1["loop"] / r2["loop"]))
+            if a.instructions:
+                d = os.path.join(work, "%s_%s_instructions" % (tag, model))
+                os.makedirs(d)
+                base_n = base[:3] + ["-var", "steps", str(a.instructions)] + base[6:]
+                c = instructions(deck, base_n, d)
+                w = [t - m for t, m in c]
+                print("  instructions of %d steps (callgrind, inside Verlet::run, MPI libraries apart): 1 rank %.4g;"
+                      " 2 ranks %.4g / %.4g (+ %.3g / %.3g in MPI, mostly polling), sum %.4f x 1 rank;"
+                      " speed-up in instructions %.3f"
+                      % (a.instructions, w[0], w[1], w[2], c[1][1], c[2][1], (w[1] + w[2]) / w[0], w[0] / max(w[1:])))
             if a.knobs and model == a.models.split(",")[0]:
                 knobs = [("processors 1 * 1 (cut along y)", ["-var", "px", "1", "-var", "py", "*"]),
                          ("processors 1 1 * (cut along z)", ["-var", "px", "1", "-var", "pz", "*"])]
