@@ -2,8 +2,9 @@
 # Whole-run (loop) time of the same scene with stock `hertz` and with
 # `hertz_elliptic`, for spheres and superquadrics, `gw_rough` (with and
 # without cohesion `gw_adhesion`) and `jkr_elliptic` on the sphere packing,
-# the superquadric packing on 1 and 2 MPI ranks, and a rolling scene with
-# and without `rolling_friction kalker`. All runs in one invocation; the
+# the superquadric packing on 1 and 2 MPI ranks, a rolling scene with
+# and without `rolling_friction kalker`, and settled beds of spheres and of
+# superquadrics on 1 and 2 ranks. All runs in one invocation; the
 # configurations run
 # round-robin REPS times (so that a slow spell of the machine hits all of
 # them alike) and the fastest run of each is kept. Prints figures, asserts
@@ -13,6 +14,13 @@
 # each configuration's time against it (before/after a change).
 # DC_BENCH_ONLY="st sth ..." runs only the named configurations (their
 # rows print; the others show as n/a).
+# The settled scenes (tests/bench/in.settled_spheres, in.settled_superquadrics)
+# are prepared once per invocation and model, before the timed runs and on 2
+# ranks (untimed: a settling run that writes a restart file, about a minute
+# each on a quiet machine); every timed run starts from that restart, so
+# "Loop time" is the settled segment alone. DC_BENCH_PREP=DIR keeps the
+# restart files in DIR and reuses them in a later invocation.
+# DC_BENCH_MPIRUN="--bind-to none" (for example) passes options to mpirun.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lmp="$root/build/bin/liggghts"
@@ -24,6 +32,10 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 sph="$root/tests/bench/in.sphere_packing"
 sq="$root/inputs/superquadric_packing/in.superquadric_packing"
 roll="$root/tests/bench/in.rolling_scene"
+ss="$root/tests/bench/in.settled_spheres"
+sqs="$root/tests/bench/in.settled_superquadrics"
+prep=${DC_BENCH_PREP:-$work/prep}
+mkdir -p "$prep"
 # name | deck | model | steps | ranks | extra -var pairs
 configs=(
   "sh|$sph|hertz|10000|1|"
@@ -64,7 +76,31 @@ configs=(
   "rt|$roll|hertz_elliptic|20000|1|-var rmodel off"
   "rk|$roll|hertz_elliptic|20000|1|-var rmodel kalker"
   "rk0|$roll|hertz_elliptic|20000|1|-var rmodel kalker -var rkey rollingVelocityMin -var rval 1e3"
+  # settled beds, 1 and 2 ranks (processors * 1 1: split along the long
+  # axis x, the scenes are symmetric about the cut); each model from its own
+  # settled restart, prepared once below
+  "ssh|$ss|hertz|20000|1|-var rfile $prep/ss_hertz.restart"
+  "ssh2|$ss|hertz|20000|2|-var rfile $prep/ss_hertz.restart"
+  "sse|$ss|hertz_elliptic|20000|1|-var rfile $prep/ss_hertz_elliptic.restart"
+  "sse2|$ss|hertz_elliptic|20000|2|-var rfile $prep/ss_hertz_elliptic.restart"
+  "sqh|$sqs|hertz|10000|1|-var rfile $prep/sq_hertz.restart"
+  "sqh2|$sqs|hertz|10000|2|-var rfile $prep/sq_hertz.restart"
+  "sqe|$sqs|hertz_elliptic|10000|1|-var rfile $prep/sq_hertz_elliptic.restart"
+  "sqe2|$sqs|hertz_elliptic|10000|2|-var rfile $prep/sq_hertz_elliptic.restart"
 )
+# untimed preparation of the settled scenes: once per restart file named by
+# a configuration that runs
+for c in "${configs[@]}"; do
+  IFS='|' read -r name deck model steps ranks extra <<< "$c"
+  if [ -n "${DC_BENCH_ONLY:-}" ] && [[ " $DC_BENCH_ONLY " != *" $name "* ]]; then continue; fi
+  [[ "$extra" == *"-var rfile "* ]] || continue
+  rf=${extra#*-var rfile }; rf=${rf%% *}
+  [ -s "$rf" ] && continue
+  d="$work/prep_$name"; mkdir -p "$d"; cd "$d"
+  echo "preparing $(basename "$rf") (untimed)" >&2
+  mpirun ${DC_BENCH_MPIRUN:-} -np 2 "$lmp" -in "$deck" -var model "$model" -var prep 1 -var rfile "$rf" -log log > screen.txt 2>&1 \
+    || { echo "preparation of $rf failed, see below" >&2; tail -20 screen.txt >&2; exit 1; }
+done
 base=${DC_BENCH_BASELINE:-}
 declare -A best
 for r in $(seq "$reps"); do
@@ -76,7 +112,7 @@ for r in $(seq "$reps"); do
       [ "$which" = base ] && { exe=$base; key="base_$name"; }
       d="$work/${key}_$r"; mkdir -p "$d"; cd "$d"
       if [ "$ranks" -gt 1 ]; then
-        mpirun -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+        mpirun ${DC_BENCH_MPIRUN:-} -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
       else
         "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
       fi
@@ -123,6 +159,11 @@ row(lambda rt, rk: "1568 spheres rolling down a 15 degree incline, hertz_ellipti
     "%.3f s, rolling_friction kalker %.3f s = %.4f x" % (rt, rk, rk / rt), "rt", "rk")
 row(lambda rt, rk0: "    kalker with nothing rolling (rollingVelocityMin 1e3: cmd_tangential everywhere, plus the "
     "hand-over's kinematics) %.3f s = %.4f x" % (rk0, rk0 / rt), "rt", "rk0")
+for tag, what, n in (("ss", "3264 spheres, settled bed", 20000), ("sq", "1056 superquadrics (blockiness 4 4), settled bed", 10000)):
+    row(lambda h, e: "%s, %d steps, 1 rank %9.3f s   %9.3f s     %.4f" % (what, n, h, e, e / h), tag + "h", tag + "e")
+    row(lambda h, e: "%s, %d steps, 2 ranks %9.3f s   %9.3f s     %.4f" % (what, n, h, e, e / h), tag + "h2", tag + "e2")
+    row(lambda h, h2, e, e2: "    speed-up 2 ranks / 1 rank: stock hertz %.3f, hertz_elliptic %.3f" % (h / h2, e / e2),
+        tag + "h", tag + "h2", tag + "e", tag + "e2")
 PY
 if [ -n "$base" ]; then
   echo
