@@ -18,9 +18,9 @@
 # are prepared once per invocation and model, before the timed runs and on 2
 # ranks (untimed: a settling run that writes a restart file, 8.5 s for the
 # spheres, 37 s for the superquadrics on a quiet machine); every timed run
-# starts from that restart, so
-# "Loop time" is the settled segment alone. DC_BENCH_PREP=DIR keeps the
-# restart files in DIR and reuses them in a later invocation.
+# starts from that restart, so "Loop time" is the settled segment alone.
+# DC_BENCH_PREP=DIR keeps the restart files in DIR and reuses them in a
+# later invocation.
 # DC_BENCH_MPIRUN="--bind-to none" (for example) passes options to mpirun.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
