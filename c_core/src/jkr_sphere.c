@@ -93,7 +93,8 @@ double dc_jkr_sphere_delta_break(double R, double Estar, double w)
 int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *s)
 {
   double a0, nu;
-  if (dc_jkr_sphere_nu_(R, Estar, w, delta, &a0, &nu) && nu <= DC_JKR_NU_H) {
+  const dc_jkr_sphere_pair pr = dc_jkr_sphere_pair_of(Estar, w);
+  if (pr.ok && dc_jkr_sphere_nu_(R, pr.c, delta, &a0, &nu) && nu <= DC_JKR_NU_H) {
     /* the Hertz-like end (dc/jkr_sphere.h), dF/d delta = (dF/da)/(d delta/da)
        = 2 E* a0 psi (psi^2 + 3)/(3 psi^2 + 1) */
     const double psi = dc_jkr_psi(nu, sqrt(nu)), psi2 = psi * psi;

@@ -401,7 +401,9 @@ protected:
   {
     if (patch.active()) patch.clear(d);
   }
-  /* The major-axis direction is worth computing only for a stored patch. */
+  /* Whether the contact patch is stored; the major-axis direction is worth
+     computing only then. */
+  bool patchStored() const { return patch.active(); }
   double *axisWanted(double *axis) const { return patch.active() ? axis : NULL; }
 
   double **Yeff, **Geff;

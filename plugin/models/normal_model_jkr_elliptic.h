@@ -78,9 +78,12 @@ public:
     registry.connect("workOfAdhesion", work, caller);
     const int n = registry.max_type();
     dc_param_error err;
+    spheres.assign((n + 1) * (n + 1), dc_jkr_sphere_pair());
     for (int i = 1; i <= n; i++)
-      for (int j = 1; j <= n; j++)
+      for (int j = 1; j <= n; j++) {
         if (dc_jkr_check(work[i][j], &err) != DC_OK) stopParam(err, i, j);
+        spheres[i * (n + 1) + j] = dc_jkr_sphere_pair_of(Yeff[i][j], work[i][j]);
+      }
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -89,6 +92,19 @@ public:
     double &formed = sidata.contact_history[contact_offset];
     const bool forming = formed == 0.0;
     formed = 1.0;
+    if (!forming && !superquadric(sidata) && !patchStored()) {
+      /* spheres at the Hertz-like end, the patch not stored: the inline
+         hot path of dc_jkr_sphere (the same bits) */
+      const int itype = sidata.itype, jtype = sidata.jtype;
+      const double R = sphereEffectiveRadius(sidata), delta = sidata.deltan;
+      double a, P;
+      if (dc_jkr_sphere_near_hertz(&spheres[itype * (ntypes_ + 1) + jtype], R, delta, &a, &P)) {
+        checkHertzRange(sidata, a * a, R);
+        const double kn = dc_punch_stiffness_circle(Yeff[itype][jtype], a);
+        applyForce(sidata, P, delta, sidata.vn, kn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], a), i_forces, j_forces);
+        return;
+      }
+    }
     jkrForce(sidata, sidata.deltan, sidata.vn, forming, i_forces, j_forces);
   }
 
@@ -139,7 +155,7 @@ private:
     double *ax = axisWanted(axis);
     relativeRadii(sidata, R_major, R_minor, ax);
     dc_contact c;
-    double P, Sn, kn, kt, a;
+    double P, Sn, kn, kt;
     if (w == 0.0) {
       double r_force = R_major, r_area = R_major;
       dc_hertz_geom g;
@@ -157,11 +173,6 @@ private:
         if (!sq) dc_hertz_geometry(R_major, R_major, &g);
         dc_hertz_normal(&g, Y, delta, &c);
       }
-    } else if (!sq && !ax && !forming && dc_jkr_sphere_near_hertz(R_major, Y, w, delta, &a, &P)) {
-      /* spheres at the Hertz-like end, the patch not stored: the inline
-         hot path of dc_jkr_sphere (the same bits) */
-      kn = Sn = dc_punch_stiffness_circle(Y, a);
-      kt = dc_mindlin_kt_circle(G, a);
     } else {
       dc_jkr_state s;
       double F_pull = 0.0;
@@ -208,6 +219,7 @@ private:
 
   static const char *whyReach() { return "adhesive contacts (work of adhesion %g J/m^2) are kept until separation"; }
   double **work;
+  std::vector<dc_jkr_sphere_pair> spheres;   /* per type pair, for the sphere hot path */
   int contact_offset, hint_offset;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;

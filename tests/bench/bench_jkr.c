@@ -101,9 +101,10 @@ static void bench_sphere(void)
      settling overlaps 0.1 .. 5 um; Hertz on the same overlaps */
   const double Rs = 7.5e-4, Es = 5e6 / (2 * (1 - 0.09)), ws = 1e-9;
   TIME_BEST(t_j, N, { dc_jkr_sphere(Rs, Es, ws, 1e-7 + 5e-6 * (double)i / N, &st); acc += st.F; });
+  const dc_jkr_sphere_pair pr = dc_jkr_sphere_pair_of(Es, ws);
   TIME_BEST(t_i, N, {
     double a = 0.0, F;
-    if (!dc_jkr_sphere_near_hertz(Rs, Es, ws, 1e-7 + 5e-6 * (double)i / N, &a, &F)) F = -1.0;
+    if (!dc_jkr_sphere_near_hertz(&pr, Rs, 1e-7 + 5e-6 * (double)i / N, &a, &F)) F = -1.0;
     acc += F + a;
   });
   TIME_BEST(t_h, N, {

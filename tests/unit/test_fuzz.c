@@ -1089,7 +1089,8 @@ static void fuzz_jkr_sphere(void)
   fz_fn *fa = fz_new("dc_jkr_sphere_at_radius");
   fz_fn *fp = fz_new("dc_jkr_sphere_pulloff");
   fz_fn *fb = fz_new("dc_jkr_sphere_delta_break");
-  fa->seconds = fp->seconds = fb->seconds = 0.0;
+  fz_fn *fh = fz_new("dc_jkr_sphere_near_hertz");
+  fa->seconds = fp->seconds = fb->seconds = fh->seconds = 0.0;
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
     const double R = A(U() < 0.4 ? fz_log(1e-7, 1e-2) : fz_pos());
@@ -1104,6 +1105,21 @@ static void fuzz_jkr_sphere(void)
     SENTINEL(s);
     FZ_CHECK(f, dc_jkr_sphere(R, E, w, d, &s), bad, dom, UNTOUCHED(s), jkr_state_ok(&s),
              "R %.17g Estar %.17g w %.17g delta %.17g: " JS_FMT, R, E, w, d, JS_ARGS(s));
+    /* the inline hot path: dc_jkr_sphere's bits wherever it applies, nothing
+       written elsewhere */
+    fh->seconds -= fz_now();
+    {
+      const dc_jkr_sphere_pair pr = dc_jkr_sphere_pair_of(E, w);
+      double ah = -1.0, Fh = -1.0;
+      fh->calls++;
+      if (dc_jkr_sphere_near_hertz(&pr, R, d, &ah, &Fh))
+        FZ_EXPECT(fh, s.contact == 1 && ah == s.a && Fh == s.F, "not the bits of dc_jkr_sphere",
+                  "R %.17g Estar %.17g w %.17g delta %.17g: a %.17g F %.17g", R, E, w, d, ah, Fh);
+      else
+        FZ_EXPECT(fh, ah == -1.0 && Fh == -1.0, "output written where it does not apply",
+                  "R %.17g Estar %.17g w %.17g delta %.17g", R, E, w, d);
+    }
+    fh->seconds += fz_now();
     /* at a radius: a from the JKR scale */
     fa->seconds -= fz_now();
     const double a = A(U() < 0.6 ? cbrt(fabs(w) * R * R / E) * fz_log(1e-6, 1e6) : fz_pos());

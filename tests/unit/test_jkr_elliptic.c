@@ -84,7 +84,8 @@ static void test_sphere_dense(void)
     if (cF < 10.0 * fabs(F)) rF = fmax(rF, fabs(s.F / F - 1.0));
     if (ca < 10.0 * a) ra = fmax(ra, fabs(s.a / a - 1.0));
     double a2, F2;
-    if (dc_jkr_sphere_near_hertz(R, E, w, d, &a2, &F2)) {
+    const dc_jkr_sphere_pair pr = dc_jkr_sphere_pair_of(E, w);
+    if (dc_jkr_sphere_near_hertz(&pr, R, d, &a2, &F2)) {
       same &= a2 == s.a && F2 == s.F;
       hot++;
     }

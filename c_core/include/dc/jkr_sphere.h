@@ -73,9 +73,10 @@ double dc_jkr_sphere_delta_break(double R, double Estar, double w);
 /* The Hertz-like end of the JKR curve: with a0 = (R delta)^1/2 and kappa =
    (2 pi w a0/E*)^1/2/delta, the JKR relation delta = a^2/R - (2 pi w
    a/E*)^1/2 divided by delta reads psi^2 = 1 + kappa psi^1/2 for psi =
-   a/a0, and F = 2/3 E* a0 delta psi (3 - psi^2). From the tables of
-   c_core/src/jkr_sphere_poly.h (tests/reference/gen_jkr_sphere_poly.py),
-   with nu = kappa^2: on nu in [0, DC_JKR_NU_0] psi = (1 + nu A1(nu)) +
+   a/a0, and F = 2/3 E* a0 delta psi (3 - psi^2). With nu = kappa^2: on
+   nu in [0, DC_JKR_NU_S] from psi's Taylor series (dc_jkr_psi_series);
+   above, from the tables of c_core/src/jkr_sphere_poly.h
+   (tests/reference/gen_jkr_sphere_poly.py): on nu up to DC_JKR_NU_0 psi = (1 + nu A1(nu)) +
    kappa (1/2 + nu B1(nu)), A1 and B1 of degree 8 (dc_jkr_psi0); above, up
    to DC_JKR_NU_H and a little beyond, psi = A(nu) + kappa B(nu) on pieces
    of width 1 (dc_jkr_psi_poly, dc/poly14.h). psi within 2.2e-16; kappa <=
@@ -87,10 +88,27 @@ extern const double dc_jkr_psi0[9][2];
 extern const double dc_jkr_psi_centre[DC_JKR_NU_PIECES];
 extern const double dc_jkr_psi_poly[DC_JKR_NU_PIECES][DC_POLY14_NROWS][2];
 
-/* psi at nu = kappa^2 in [0, DC_JKR_NU_0]: A1 and B1 by Estrin's scheme
-   (the generator's order). */
+/* psi at nu = kappa^2 in [0, DC_JKR_NU_S] (kappa <= 0.032, weak adhesion):
+   its Taylor series at kappa = 0, exact coefficients by Lagrange inversion
+   of kappa = y (2 + y)/(1 + y)^1/2, y = psi - 1:
+     psi = 1 + kappa/2 - kappa^3/64 + kappa^4/128 - 9 kappa^5/4096
+           + 55 kappa^7/131072 - 9 kappa^8/32768 + 1547 kappa^9/2^24
+           - 11799 kappa^11/2^29 + ...
+   (the kappa^2, kappa^6, kappa^10 terms vanish); cut after kappa^9, the
+   rest is below 7e-22. */
+#define DC_JKR_NU_S 1e-3
+static inline double dc_jkr_psi_series(double nu, double kappa)
+{
+  const double even = 1.0 + nu * nu * (1.0 / 128.0 - 9.0 / 32768.0 * (nu * nu));
+  const double odd = 0.5 + nu * (-1.0 / 64.0 + nu * (-9.0 / 4096.0 + nu * (55.0 / 131072.0 + nu * (1547.0 / 16777216.0))));
+  return even + kappa * odd;
+}
+
+/* psi at nu = kappa^2 in [0, DC_JKR_NU_0]: the series up to DC_JKR_NU_S,
+   above A1 and B1 by Estrin's scheme (the generator's order). */
 static inline double dc_jkr_psi_near(double nu, double kappa)
 {
+  if (nu <= DC_JKR_NU_S) return dc_jkr_psi_series(nu, kappa);
   const double x2 = nu * nu, x4 = x2 * x2, x8 = x4 * x4;
   double y[2];
   for (int f = 0; f < 2; f++) {
@@ -111,17 +129,34 @@ static inline double dc_jkr_psi(double nu, double kappa)
   return dc_jkr_psi_poly[p][0][0] + (s[0] + kappa * y[1]);
 }
 
-/* a0 and nu for R, E*, w in (1e-60, 1e60), 0 < delta < 1e60 with R delta a
-   normal number (no other intermediate can leave the doubles; 1/delta^2
-   overflowing gives nu = inf); 0 (nothing written) outside. */
-static inline int dc_jkr_sphere_nu_(double R, double Estar, double w, double delta, double *a0, double *nu)
+/* What a material pair fixes for the Hertz-like end: E* and c = 2 pi w/E*;
+   ok = 1 when E* and w lie in (1e-60, 1e60), where the inline path
+   applies (dc_jkr_sphere_nu_). Built once per pair, it saves a division
+   and the range checks of E* and w per contact. */
+typedef struct {
+  double Estar, c;
+  int ok;
+} dc_jkr_sphere_pair;
+
+static inline dc_jkr_sphere_pair dc_jkr_sphere_pair_of(double Estar, double w)
 {
-  if (!(R > 1e-60 && R < 1e60 && Estar > 1e-60 && Estar < 1e60 && w > 1e-60 && w < 1e60 && delta > 0.0 &&
-        delta < 1e60 && R * delta >= DBL_MIN))
-    return 0;
+  dc_jkr_sphere_pair p;
+  p.ok = Estar > 1e-60 && Estar < 1e60 && w > 1e-60 && w < 1e60;
+  p.Estar = Estar;
+  p.c = p.ok ? 2.0 * M_PI * w / Estar : 0.0;
+  return p;
+}
+
+/* a0 and nu = a0 c/delta^2 for R in (1e-60, 1e60), 0 < delta < 1e60 with
+   R delta a normal number, c of an ok pair (no other intermediate can
+   leave the doubles; 1/delta^2 overflowing gives nu = inf); 0 (nothing
+   written) outside. */
+static inline int dc_jkr_sphere_nu_(double R, double c, double delta, double *a0, double *nu)
+{
+  if (!(R > 1e-60 && R < 1e60 && delta > 0.0 && delta < 1e60 && R * delta >= DBL_MIN)) return 0;
   const double id = 1.0 / delta;
   *a0 = sqrt(R * delta);
-  *nu = *a0 * (2.0 * M_PI * w / Estar * (id * id));   /* one product after the square root */
+  *nu = *a0 * (c * (id * id));   /* one product after the square root */
   return 1;
 }
 
@@ -131,19 +166,19 @@ static inline double dc_jkr_sphere_force_(double Estar, double a0, double delta,
   return 2.0 / 3.0 * Estar * a0 * delta * psi * (3.0 - psi * psi);
 }
 
-/* The hot path of dc_jkr_sphere, inline: where nu <= DC_JKR_NU_0 (kappa
-   <= 1/2, delta >= 9.2 delta_scale: the Hertz-like end where compressed
-   DEM contacts spend their time) and the inputs are as for
-   dc_jkr_sphere_nu_, the contact radius *a and force *F of dc_jkr_sphere
-   to the bit, and 1; elsewhere 0 and nothing written (call
-   dc_jkr_sphere). */
-static inline int dc_jkr_sphere_near_hertz(double R, double Estar, double w, double delta, double *a, double *F)
+/* The hot path of dc_jkr_sphere, inline: where nu <= DC_JKR_NU_H (kappa
+   <= 4, delta >= 0.575 delta_scale: the Hertz-like end where compressed
+   DEM contacts spend their time), p ok and R, delta as for
+   dc_jkr_sphere_nu_, the contact radius *a and force *F of
+   dc_jkr_sphere(R, p->Estar, w, delta) to the bit, and 1; elsewhere 0 and
+   nothing written (call dc_jkr_sphere). */
+static inline int dc_jkr_sphere_near_hertz(const dc_jkr_sphere_pair *p, double R, double delta, double *a, double *F)
 {
   double a0, nu;
-  if (!dc_jkr_sphere_nu_(R, Estar, w, delta, &a0, &nu) || !(nu <= DC_JKR_NU_0)) return 0;
-  const double psi = dc_jkr_psi_near(nu, sqrt(nu));
+  if (!p->ok || !dc_jkr_sphere_nu_(R, p->c, delta, &a0, &nu) || !(nu <= DC_JKR_NU_H)) return 0;
+  const double psi = dc_jkr_psi(nu, sqrt(nu));
   *a = a0 * psi;
-  *F = dc_jkr_sphere_force_(Estar, a0, delta, psi);
+  *F = dc_jkr_sphere_force_(p->Estar, a0, delta, psi);
   return 1;
 }
 
