@@ -29,6 +29,7 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #include "atom.h"
 #include "cohesion_model_base.h"
 #include "contact_frame.h"
+#include "dc_properties.h"
 #include "contact_models.h"
 #include "error.h"
 #include "global_properties.h"
@@ -65,9 +66,9 @@ public:
   void connectToProperties(PropertyRegistry &registry)
   {
     const char *caller = "cohesion_model gw_adhesion";
-    registry.registerProperty("workOfAdhesion", &createWork, caller);
-    registry.registerProperty("surfaceRoughnessType", &createRoughnessType, caller);
-    registry.registerProperty("asperityCount", &createAsperityCount, caller);
+    registry.registerProperty("workOfAdhesion", &dcCreateWorkOfAdhesion, caller);
+    registry.registerProperty("surfaceRoughnessType", &dcCreateRoughnessType, caller);
+    registry.registerProperty("asperityCount", &dcCreateAsperityCount, caller);
     registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller);
     double **w = registry.getMatrixProperty("workOfAdhesion", caller)->data;
     double *s = registry.getVectorProperty("surfaceRoughnessType", caller)->data;
@@ -160,19 +161,6 @@ private:
     if (o.F == 0.0) return false;
     applyNormalForce(sidata, o.F, atom->x, i_forces, j_forces);
     return true;
-  }
-
-  static MatrixProperty *createWork(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "workOfAdhesion", caller, sanity_checks, 0.0);
-  }
-  static VectorProperty *createRoughnessType(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypeProperty(registry, "surfaceRoughness", caller, sanity_checks, 0.0);
-  }
-  static MatrixProperty *createAsperityCount(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "asperityCount", caller, sanity_checks, 1e-300);
   }
 
   int history_offset, ntypes;

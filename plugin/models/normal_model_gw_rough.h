@@ -48,6 +48,7 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,@DC_MODEL_ID@)
 
 #include <vector>
 #include "dc_model_base.h"
+#include "dc_properties.h"
 #include "superquadric_gap.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
@@ -107,7 +108,7 @@ public:
     if (gwElliptic) {
       sphereGeom.assign((ntypes + 1) * (ntypes + 1), dc_hertz_geom());
       sphereBound.assign((ntypes + 1) * (ntypes + 1), dc_gw_bound());
-      registry.registerProperty("asperityCount", &createAsperityCount, caller);
+      registry.registerProperty("asperityCount", &dcCreateAsperityCount, caller);
       registry.connect("asperityCount", n_asp, caller);
       for (int i = 1; i <= ntypes; i++)
         for (int j = 1; j <= ntypes; j++)
@@ -243,24 +244,16 @@ private:
   static MatrixProperty *createRoughness(PropertyRegistry &registry, const char *caller, bool)
   {
     const int n = registry.max_type();
-    registry.registerProperty("surfaceRoughnessType", &createRoughnessType);
+    registry.registerProperty("surfaceRoughnessType", &dcCreateRoughnessType);
     VectorProperty *v = registry.getVectorProperty("surfaceRoughnessType", caller);
     MatrixProperty *m = new MatrixProperty(n + 1, n + 1);
     for (int i = 1; i <= n; i++)
       for (int j = 1; j <= n; j++) m->data[i][j] = dc_gw_roughness_combine(v->data[i], v->data[j]);
     return m;
   }
-  static VectorProperty *createRoughnessType(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypeProperty(registry, "surfaceRoughness", caller, sanity_checks, 0.0);
-  }
   static MatrixProperty *createMu(PropertyRegistry &registry, const char *caller, bool sanity_checks)
   {
     return MODEL_PARAMS::createPerTypePairProperty(registry, "roughnessMu", caller, sanity_checks);
-  }
-  static MatrixProperty *createAsperityCount(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "asperityCount", caller, sanity_checks, 1e-300);
   }
 
   double **roughness, **mu, **n_asp;

@@ -36,6 +36,7 @@ NORMAL_MODEL(JKR_ELLIPTIC,jkr_elliptic,@DC_MODEL_ID@)
 #define NORMAL_MODEL_JKR_ELLIPTIC_H_
 
 #include "dc_model_base.h"
+#include "dc_properties.h"
 #include "superquadric_gap.h"
 #include "dc/jkr_elliptic.h"
 #include "dc/mindlin.h"
@@ -74,7 +75,7 @@ public:
   {
     DcNormalModel::connectToProperties(registry);
     const char *caller = "model jkr_elliptic";
-    registry.registerProperty("workOfAdhesion", &createWork, caller);
+    registry.registerProperty("workOfAdhesion", &dcCreateWorkOfAdhesion, caller);
     registry.connect("workOfAdhesion", work, caller);
     const int n = registry.max_type();
     dc_param_error err;
@@ -210,11 +211,6 @@ private:
     applyForce(sidata, P, delta, vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) publish(sidata, c, ax);
     return true;
-  }
-
-  static MatrixProperty *createWork(PropertyRegistry &registry, const char *caller, bool sanity_checks)
-  {
-    return MODEL_PARAMS::createPerTypePairProperty(registry, "workOfAdhesion", caller, sanity_checks, 0.0);
   }
 
   static const char *whyReach() { return "adhesive contacts (work of adhesion %g J/m^2) are kept until separation"; }

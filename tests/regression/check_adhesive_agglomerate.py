@@ -8,7 +8,9 @@ the contact count must agree exactly and the sum of force magnitudes to 1e-9
 agglomerate must form (contacts grow; kinetic energy falls below half), and
 the 1-rank run must match its committed reference. The rough agglomerate
 without adhesion (workOfAdhesion 0) keeps no contact and twice the kinetic
-energy: the summits' adhesion holds it together.
+energy: the summits' adhesion holds it together. The logs must not report a
+property registered twice with different creators (gw_rough and
+gw_adhesion share surfaceRoughness and asperityCount).
 Usage: check_adhesive_agglomerate.py WORKDIR [--update]"""
 import os
 import sys
@@ -24,8 +26,11 @@ for case, least in CASES:
     rows = {}
     for ranks in (1, 2):
         d = os.path.join(work, "%s_ranks%d" % (case, ranks))
-        run("adhesive_agglomerate/in." + case, d, ranks=ranks, tag="np%d" % ranks)
+        log = run("adhesive_agglomerate/in." + case, d, ranks=ranks, tag="np%d" % ranks)
         rows[ranks] = table(os.path.join(d, "agglomerate.txt"))
+        # the models that share a property register one creator for it
+        c.true("different implementation" not in log,
+               "%s, %d rank(s): no property registered twice with different creators" % (case, ranks))
     one, two = rows[1], rows[2]
     c.true(len(one) == len(two) and all(a[1] == b[1] for a, b in zip(one, two)),
            "%s: contact count equal on 1 and 2 ranks on every row (final %d and %d)" % (case, one[-1][1], two[-1][1]))
