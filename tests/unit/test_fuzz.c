@@ -3125,8 +3125,11 @@ static void fuzz_gwa_table(void)
         }
       }
     }
-    FZ_EXPECT(f, st != DC_ERANGE || gwa_bound(p, R) > LOG_MAX - 3.0, "DC_ERANGE for representable results",
-              GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
+    /* the band adds dw/d delta (F_U - F_L), |dw/d delta| up to about
+       1/|delta_break| = 1/(D sigma): a further factor 1/D */
+    const double Dr = -p->ub * p->dc_coef * cbrt(fabs(R)) * p->inv_sigma;
+    FZ_EXPECT(f, st != DC_ERANGE || gwa_bound(p, R) + fmax(0.0, -lg(Dr)) > LOG_MAX - 3.0,
+              "DC_ERANGE for representable results", GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
     if (st != DC_OK && U() < 0.5) hist[0] = hist[1] = 0.0;
   }
   fz_done(f);
