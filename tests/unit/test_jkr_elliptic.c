@@ -71,7 +71,7 @@ static void test_sphere_dense(void)
   if (!f) return;
   double v[8];
   check_read_row(f, v, 8);   /* column names */
-  int rows = 0, hot = 0, same = 1;
+  int rows = 0, hot = 0, series = 0, same = 1;
   double eF = 0, ea = 0, ek = 0, rF = 0, ra = 0;
   while (check_read_row(f, v, 8) == 8) {
     const double R = v[0], E = v[1], w = v[2], d = v[3], F = v[4], a = v[5], kn = v[6], dad = v[7];
@@ -88,15 +88,18 @@ static void test_sphere_dense(void)
     if (dc_jkr_sphere_near_hertz(&pr, R, d, &a2, &F2)) {
       same &= a2 == s.a && F2 == s.F;
       hot++;
+      double a0, nu;
+      if (dc_jkr_sphere_nu_(R, pr.c, d, &a0, &nu) && nu <= DC_JKR_NU_S) series++;
     }
     rows++;
   }
   fclose(f);
-  printf("classical JKR vs mpmath (%d states, %d on the inline hot path): F %.2g, a %.2g, kn %.2g (in units of\n"
-         "  the condition bound); where the condition number is below 10: F %.2g, a %.2g relative\n",
-         rows, hot, eF, ea, ek, rF, ra);
+  printf("classical JKR vs mpmath (%d states, %d on the inline hot path, %d of them on psi's series): F %.2g, a %.2g,\n"
+         "  kn %.2g (in units of the condition bound); where the condition number is below 10: F %.2g, a %.2g relative\n",
+         rows, hot, series, eF, ea, ek, rF, ra);
   CHECK(rows == 1384);
   CHECK(hot > 200);
+  CHECK(series > 100);
   CHECK(same);
   CHECK(eF <= 8 * EPS);
   CHECK(ea <= 8 * EPS);
