@@ -18,6 +18,10 @@ int dc_jamari_check(const dc_jamari_params *p, dc_param_error *err)
   if (st == DC_OK)
     st = dc_param_check("plasticityCh", p->c_h, 2.0 / 3.0 * p->K_v, 0, INFINITY, 1, "[2/3 plasticityKv, inf)", err);
   if (st == DC_OK) st = dc_param_check("plasticityCa", p->c_A, 2.0, 0, INFINITY, 1, "[2, inf)", err);
+  /* the yield pressures K_v H and c_h H must be doubles */
+  if (st == DC_OK)
+    st = dc_param_check("hardness", p->H, 0.0, 1, DBL_MAX / (p->c_h > p->K_v ? p->c_h : p->K_v), 0,
+                        "(0, DBL_MAX / max(plasticityKv, plasticityCh)]", err);
   return st;
 }
 

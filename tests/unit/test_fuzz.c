@@ -1837,7 +1837,8 @@ static void fuzz_jamari(void)
     dc_param_error err;
     SENTINEL(err);
     const int st = dc_jamari_check(&p, &err);
-    const int inside = jamari_params_in(&p);
+    /* the laws' domain, and the yield pressures K_v H, c_h H doubles */
+    const int inside = jamari_params_in(&p) && p.H <= DBL_MAX / fmax(p.K_v, p.c_h);
     FZ_CHECK(f, st, !ALLFIN(p.H, p.K_v, p.c_h, p.c_A), inside, 1, 1, "H %.17g K_v %.17g c_h %.17g c_A %.17g", p.H, p.K_v,
              p.c_h, p.c_A);
     /* the first bad one is named, with its value */
@@ -1847,6 +1848,7 @@ static void fuzz_jamari(void)
     else if (!(isfinite(p.K_v) && p.K_v > 0.0)) first = 1;
     else if (!(isfinite(p.c_h) && p.c_h >= 2.0 / 3.0 * p.K_v)) first = 2;
     else if (!(isfinite(p.c_A) && p.c_A >= 2.0)) first = 3;
+    else if (!(p.H <= DBL_MAX / fmax(p.K_v, p.c_h))) first = 0;
     FZ_EXPECT(f, st == (inside ? DC_OK : DC_EDOM) &&
                  (st == DC_OK ? UNTOUCHED(err)
                               : first >= 0 && err.name && !strcmp(err.name, names[first]) && err.range &&

@@ -498,6 +498,9 @@ static void check_params(void)
     {{1e9, 0.6, INFINITY, 108.0}, "plasticityCh"},
     {{1e9, 0.6, 1.0, 1.99}, "plasticityCa"},
     {{1e9, 0.6, 1.0, NAN}, "plasticityCa"},
+    /* the yield pressures K_v H, c_h H beyond the doubles */
+    {{1e300, 1e9, 1e9, 108.0}, "hardness"},
+    {{1e308, 0.6, 2.0, 108.0}, "hardness"},
   };
   for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
     memset(&err, 0, sizeof err);
@@ -507,6 +510,9 @@ static void check_params(void)
     if (!CHECK(st == DC_EDOM && err.name && !strcmp(err.name, bad[i].name) && err.range))
       printf("  %s: got %s\n", what, err.name ? err.name : "(null)");
   }
+  /* the largest hardness that keeps c_h H a double is inside */
+  p = (dc_jamari_params){DBL_MAX / 2.0, 0.6, 2.0, 108.0};
+  CHECK(dc_jamari_check(&p, &err) == DC_OK);
   /* c_h = 2/3 K_v and c_A = 2 are inside */
   p = (dc_jamari_params){1e9, 0.6, 2.0 / 3.0 * 0.6, 2.0};
   CHECK(dc_jamari_check(&p, &err) == DC_OK);

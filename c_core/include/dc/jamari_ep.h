@@ -180,7 +180,9 @@ static inline double dc_jamari_circle_yield_ratio(double Estar, const dc_jamari_
 
 /* Parameter check (dc/contract.h), in the order hardness (0, inf),
    plasticityKv (0, inf), plasticityCh [2/3 plasticityKv, inf), plasticityCa
-   [2, inf), all finite: DC_OK, or DC_EDOM with err naming the first bad one. */
+   [2, inf), all finite, and hardness at most DBL_MAX / max(plasticityKv,
+   plasticityCh) (the yield pressures K_v H and c_h H are doubles): DC_OK,
+   or DC_EDOM with err naming the first bad one. */
 int dc_jamari_check(const dc_jamari_params *p, dc_param_error *err);
 
 /* Per-contact history: plain doubles, all zero at the start (no plastic
