@@ -9,9 +9,17 @@
    R_minor)^1/2 (the JKR scales of dc_jkr_geom) and R_force (the Hertz
    force's). Measured (2026-11-29), with Rhat: 5.0e-5 at ratio 0.97,
    6.0e-4 at 0.9, 6.9e-3 at 0.7, 2.6e-2 at 0.5, 0.27 at 0.1, 1.0 at 0.01
-   (R_force: about twice that): no equivalent circle meets 1e-4 below a
-   ratio of ~0.97, so a table for elliptic summits needs R_minor/R_major
-   as a coordinate of its own. Runs in under a second.
+   (R_force: about twice that). A third column matches the circle's
+   scales to the elliptic summit's instead of a radius: delta_c from its
+   separation overlap (delta_break / delta_c = -3/8 pi^4/3 for a circle),
+   F_s from its force there (F_break / F_s = -5 pi/48), the table read at
+   tau = sigma/delta_c (dc_gwa_table_reduced): 1.7e-5 at 0.97, 2.0e-4 at
+   0.9, 2.3e-3 at 0.7, 8.2e-3 at 0.5, 2.3e-2 at 0.3, 5.5e-2 at 0.1, 0.10 at
+   0.01 (30 November).
+   No equivalent circle meets 1e-4 below a ratio of ~0.97, so a table for
+   elliptic summits needs R_minor/R_major as a coordinate of its own (the
+   matched-scale circle leaves a correction of at most ~6 % to tabulate).
+   Runs in under a second.
    Build and run (from the repository root, library built in B):
      cc -O2 -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gwa_elliptic_factor.c \
         B/c_core/libdemcontact.a -lgsl -lgslcblas -lm -o /tmp/gwa_ef && /tmp/gwa_ef */
@@ -27,15 +35,18 @@ int main(void)
   const double E = 2.7e6, sigma = 2.1e-5, Rmaj = 7.5e-4;
   const double ws[] = {0.05, 0.5};
   const double ratios[] = {1.0, 0.97, 0.9, 0.7, 0.5, 0.3, 0.1, 0.03, 0.01};
-  printf("R_minor/R_major  worst rel. difference: circle at Rhat   at R_force   (tau at Rhat: %s)\n", "w = 0.05, 0.5");
+  const double ub = -3.0 / 8.0 * pow(M_PI, 4.0 / 3.0);   /* delta_break / delta_c of a circle */
+  printf("R_minor/R_major  worst rel. difference: circle at Rhat   at R_force   matched scales   (tau at Rhat: %s)\n",
+         "w = 0.05, 0.5");
   for (int ir = 0; ir < 9; ir++) {
-    double worst[2] = {0, 0}, tau[2] = {0, 0};
+    double worst[3] = {0, 0, 0}, tau[2] = {0, 0};
     for (int iw = 0; iw < 2; iw++) {
       dc_jkr_geom g;
       dc_gwa_table_pair p;
       if (dc_jkr_geometry(Rmaj, Rmaj * ratios[ir], E, ws[iw], &g) != DC_OK ||
           dc_gwa_table_pair_init(E, ws[iw], sigma, 1.0, &p) != DC_OK) return 1;
       tau[iw] = sigma / (p.dc_coef * cbrt(g.Rhat));
+      const double dcm = g.delta_break / ub, Fsm = g.F_break / (-5.0 * M_PI / 48.0), D = -g.delta_break / sigma;
       for (int b = 0; b < 2; b++)
         for (double h = 3.0; h >= -3.0; h -= 0.5) {
           const double delta = -h * sigma;
@@ -50,9 +61,12 @@ int main(void)
             if (dc_gwa_table_force(&p, R[k], b, delta, &F, &kn) != DC_OK) return 1;
             worst[k] = fmax(worst[k], fabs(F / exact - 1));
           }
+          double G, Gx;
+          if (dc_gwa_table_reduced(b, b ? h - D : h, log(sigma / dcm), &G, &Gx) != DC_OK) return 1;
+          worst[2] = fmax(worst[2], fabs(Fsm * G / exact - 1));
         }
     }
-    printf("%-16g %29.2e %12.2e   %.3g, %.3g\n", ratios[ir], worst[0], worst[1], tau[0], tau[1]);
+    printf("%-16g %29.2e %12.2e %16.2e   %.3g, %.3g\n", ratios[ir], worst[0], worst[1], worst[2], tau[0], tau[1]);
   }
   return 0;
 }
