@@ -18,7 +18,7 @@
    0.01 (30 November).
    No equivalent circle meets 1e-4 below a ratio of ~0.97, so a table for
    elliptic summits needs R_minor/R_major as a coordinate of its own (the
-   matched-scale circle leaves a correction of at most ~6 % to tabulate).
+   matched-scale circle leaves a correction of up to 10 % to tabulate).
    Runs in under a second.
    Build and run (from the repository root, library built in B):
      cc -O2 -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gwa_elliptic_factor.c \
