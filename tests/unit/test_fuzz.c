@@ -1083,6 +1083,29 @@ static double jkr_w(double R, double E)
   return E * R * pow(fz_log(1e-12, 10.0), 3.0) * (U() < 0.5 ? 1.0 : fz_log(1e-20, 1.0));
 }
 
+/* psi = a/a0 of the Hertz-like end (series, near polynomials, pieces up to
+   a little beyond DC_JKR_NU_H): finite, >= 1, and a root of
+   psi^2 = 1 + kappa psi^1/2 to 1e-15 of psi^2 (an independent check of
+   the tables and of the series' coefficients) */
+static void fuzz_jkr_psi(void)
+{
+  fz_fn *f = fz_new("dc_jkr_psi");
+  double worst = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    const double r = U();
+    const double nu = r < 0.3 ? fz_log(1e-30, DC_JKR_NU_S) : r < 0.6 ? DC_JKR_NU_S + (DC_JKR_NU_0 - DC_JKR_NU_S) * U()
+                                                          : DC_JKR_NU_0 + (DC_JKR_NU_H + 1.0 - DC_JKR_NU_0) * U();
+    const double kappa = sqrt(nu), psi = dc_jkr_psi(nu, kappa);
+    f->calls++;
+    const double res = fabs((psi * psi - 1.0) - kappa * sqrt(psi)) / (psi * psi);
+    worst = fmax(worst, res);
+    FZ_EXPECT(f, isfinite(psi) && psi >= 1.0 && res <= 1e-15, "not the root of psi^2 = 1 + kappa psi^1/2",
+              "nu %.17g: psi %.17g, residual %.3g of psi^2", nu, psi, res);
+  }
+  fz_done(f);
+  printf("dc_jkr_psi: largest residual %.2g of psi^2\n", worst);
+}
+
 static void fuzz_jkr_sphere(void)
 {
   fz_fn *f = fz_new("dc_jkr_sphere");
@@ -2579,7 +2602,7 @@ static void fuzz_classical_tangential(void)
         const double cond = fmax(fmax(plane_cond(pass_du ? du : vt, n), plane_cond(vt, n)), plane_cond(h0.spring, n));
         if (fabs(nn - 1.0) < 1e-14)
           pr &= fabs(o.Ft[0] * n[0] + o.Ft[1] * n[1] + o.Ft[2] * n[2]) <=
-                (F > 0.0 ? 1e-12 * F * cond : 0.0) + 16.0 * DBL_TRUE_MIN * amp;
+                (F > 0.0 ? 1e-12 * (F * cond) : 0.0) + 16.0 * DBL_TRUE_MIN * amp;   /* F cond first: 1e-12 F may underflow to 0 while cond is inf */
       }
       FZ_EXPECT(f, pr, "not the law's promises (limit, plane, zeros when not formed)",
                 CT_FMT " a %.17g F_b %.17g formed %.17g n (%.17g %.17g %.17g) du %s(%.17g %.17g %.17g) "
@@ -3821,6 +3844,7 @@ int main(void)
   fuzz_gw_solver();
   fuzz_gw_solve();
   fuzz_rough_tangential();
+  fuzz_jkr_psi();
   fuzz_jkr_sphere();
   fuzz_jkr_geometry();
   fuzz_jkr_contact();
