@@ -270,7 +270,7 @@ static void test_band(void)
   const double sigmas[] = {1e-9, 1.27e-8, 6.3e-8, 4.6e-7};   /* tau 0.08, 1, 5, 36 */
   const double hmins[] = {-3.0, -1.0, 0.0, 1.0, 3.0};
   const double xis[] = {0.01, 0.1, 0.3, 0.6, 0.9, 1.0};
-  double worst = 0.0, worst_old = 0.0, closure = 0.0;
+  double worst = 0.0, worst_old = 0.0, closure = 0.0, kn_worst = 0.0;
   for (int k = 0; k < 4; k++) {
     const double sigma = sigmas[k];
     dc_gwa_table_pair p;
@@ -288,6 +288,17 @@ static void test_band(void)
         dc_gwa_table_out o;
         CHECK(dc_gwa_table_step(&p, R, delta, hist, &o) == DC_OK);
         CHECK(o.weight > 0.0 && o.weight <= 1.0);
+        if (j < 5) {
+          /* kn = dF/d delta in the band (the weight's slope included): central
+             difference at the same largest overlap */
+          const double e = 1e-5 * xis[j] * D * sigma;
+          dc_gwa_table_out o1, o2;
+          double h1[2] = {1.0, -hmin * sigma}, h2[2] = {1.0, -hmin * sigma};
+          CHECK(dc_gwa_table_step(&p, R, delta + e, h1, &o1) == DC_OK);
+          CHECK(dc_gwa_table_step(&p, R, delta - e, h2, &o2) == DC_OK);
+          const double fd = (o1.F - o2.F) / (2.0 * e);
+          kn_worst = fmax(kn_worst, fabs(fd - o.kn) / (fabs(o.kn) + fabs(o.F) / sigma));
+        }
         double FL, FU, k1, k2;
         CHECK(exact(&g, n, sigma, delta, DC_GW_LOADING, &FL, &k1) == 0);
         CHECK(exact(&g, n, sigma, delta, DC_GW_UNLOADING, &FU, &k2) == 0);
@@ -321,6 +332,8 @@ static void test_band(void)
   printf("band: F_L + the attached summits' integral at xi = 1 against the exact unloading branch: %.1e of "
          "|F_U - F_L|\n", closure);
   CHECK(closure < 1e-3);
+  printf("band: kn against the central difference of F: %.1e of |kn| + |F|/sigma\n", kn_worst);
+  CHECK(kn_worst < 1e-5);
   /* measured: 0.055 at most (tau 1), the smoothstep 0.97 */
   CHECK(worst < 0.1);
   CHECK(worst < 0.5 * worst_old);
