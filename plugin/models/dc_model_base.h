@@ -404,7 +404,7 @@ protected:
   /* Whether the contact patch is stored; the major-axis direction is worth
      computing only then. */
   bool patchStored() const { return patch.active(); }
-  double *axisWanted(double *axis) const { return patch.active() ? axis : NULL; }
+  double *axisWanted(double *axis) const { return patchStored() ? axis : NULL; }
 
   double **Yeff, **Geff;
   bool tangential_damping, limitForce, viscoelastic, contactPatch;
