@@ -435,14 +435,17 @@ double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R)
 }
 
 /* J(v) = int_0^v e^(h t - t^2/2) dt = P(h - v < S < h)/phi(h) for a standard
-   normal S, by its series (He_n the Hermite polynomials), for |h| v < 0.05:
-   v (1 + He_1 v/2 + He_2 v^2/6 + He_3 v^3/24 + He_4 v^4/120), the rest
-   below 4e-10 relative */
+   normal S, by its series sum_n He_n(h) v^(n+1)/(n+1)! (He_n the Hermite
+   polynomials) to n = 6, for (|h| + 3) v < 1/2: the rest is below 4e-7
+   relative (He_7(h) v^8/8! <= ((|h| + 3) v)^7 v/8!, J >= v e^(-|h| v - v^2/2)),
+   far inside the band law's own error */
 static double band_series(double h, double v)
 {
   const double h2 = h * h;
-  return v * (1.0 + v * (0.5 * h + v * ((h2 - 1.0) / 6.0 + v * (h * (h2 - 3.0) / 24.0 +
-                                                                   v * ((h2 * (h2 - 6.0) + 3.0) / 120.0)))));
+  const double he2 = h2 - 1.0, he3 = h * (h2 - 3.0), he4 = h2 * (h2 - 6.0) + 3.0, he5 = h * (h2 * (h2 - 10.0) + 15.0),
+               he6 = h2 * (h2 * (h2 - 15.0) + 45.0) - 15.0;
+  return v * (1.0 + v * (h / 2.0 + v * (he2 / 6.0 + v * (he3 / 24.0 + v * (he4 / 120.0 + v * (he5 / 720.0 +
+                                                                                            v * (he6 / 5040.0)))))));
 }
 
 /* P(a < S < b), a < b, from the tail away from 0 (no cancellation in
@@ -463,13 +466,17 @@ static double normal_mass(double a, double b)
    is the same at every stretch: it is -0.52 F_s at touch, -0.59 at most
    and -0.33 at separation (tests/unit/test_gw_rough_adhesive_table.c
    measures the rest against the attached summits' integral). Where the
-   Gaussian mass underflows (|h| > 38: no summit in the band) or a result
-   leaves the doubles: w = xi, dw/d delta = -1/|delta_break|, the limit
-   for D -> 0. */
+   band holds no summit to speak of (all of it beyond 12 sigma of the mean
+   plane: a mass below 2e-33) or a result leaves the doubles: w = xi,
+   dw/d delta = -1/|delta_break|, the limit for D -> 0. Narrow bands take
+   J's series, the others erfc. */
 static void band_weight(double h, double hmin, double D, double xi, double sigma, double db, double *w, double *dwdd)
 {
   double ww = -1.0, d = NAN;
-  if (D * fmax(1.0, fabs(h)) < 0.05) {
+  if (h < -12.0 || h - D > 12.0) {
+    /* the band holds a Gaussian mass below 2e-33: any weight gives the
+       same force; the limit below */
+  } else if ((fabs(h) + 3.0) * D < 0.5) {
     const double JD = band_series(h, D), q = band_series(h, h - hmin) / JD;
     ww = q < 1.0 ? q : 1.0;
     d = -(1.0 + ww * expm1(h * D - 0.5 * D * D)) / JD / sigma;
@@ -495,7 +502,7 @@ static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_rad
                        double *hist, dc_gwa_table_out *o)
 {
   if (!(isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
-  if (p->w == 0.0) { o->F = 0.0; o->kn = 0.0; o->weight = 0.0; return DC_OK; }
+  if (p->w == 0.0 || dc_gwa_table_apart(p, delta, hist)) { o->F = 0.0; o->kn = 0.0; o->weight = 0.0; return DC_OK; }
   const int touched = hist[0] != 0.0;
   double dmax = touched ? hist[1] : delta;
   if (delta > dmax) dmax = delta;

@@ -11,8 +11,8 @@
      sigma_j^2)^1/2 per pair) and asperityCount (peratomtypepair) as
      gw_rough, youngsModulus and poissonsRatio (E*).
    Spheres only (circular summits); pairs with sigma = 0 get no force. The
-   force acts from the Gaussian tail of the summit heights on (within the
-   contact distance) and, once pressed, until the lowest attached summit
+   force acts from the Gaussian tail of the summit heights on (12 sigma
+   apart, dc_gwa_table_apart) and, once pressed, until the lowest attached summit
    lets go, (D + 8) sigma apart at most
    (dc_gwa_table_reach): the deck must set contact_distance_factor so that
    the pair stays in reach; the run stops naming the value needed. */
@@ -119,6 +119,10 @@ private:
     const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
     const dc_gwa_table_pair &p = pairs[k];
     if (p.sigma == 0.0) return false;   /* a smooth pair */
+    if (dc_gwa_table_apart(&p, delta, &sidata.contact_history[history_offset])) {
+      if (sidata.contact_flags) *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
+      return false;
+    }
     const double R = sphereEffectiveRadius(sidata);
     /* the set-up for R, kept per type pair while R repeats */
     dc_gwa_table_radius &rad = radii[k];

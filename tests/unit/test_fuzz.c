@@ -3130,9 +3130,9 @@ static void fuzz_gwa_table(void)
               "dc_gwa_table_radius_init + _step_radius differ from dc_gwa_table_step",
               GWA_FMT " delta %.17g: status %d vs %d", GWA_ARGS(p, R), d, st2, st);
     if (st == DC_OK && dom) {
-      if (p->w == 0.0)
+      if (p->w == 0.0 || dc_gwa_table_apart(p, d, h0))
         FZ_EXPECT(f, o.F == 0.0 && o.kn == 0.0 && o.weight == 0.0 && !memcmp(hist, h0, sizeof hist),
-                  "w = 0: not zero, or the history written", GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
+                  "w = 0 or apart: not zero, or the history written", GWA_FMT " delta %.17g", GWA_ARGS(p, R), d);
       else {
         /* loading while delta >= the largest overlap; the history holds it */
         FZ_EXPECT(f, (hist[0] == 0.0 || (hist[0] == 1.0 && hist[1] >= d)) && ((h0[0] != 0.0 && d < h0[1]) || o.weight == 0.0),

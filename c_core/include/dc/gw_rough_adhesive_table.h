@@ -86,7 +86,9 @@
    gave a contact that only grazed, at h = 12 and back at 12.5, a pull of
    9e-4 n_asp 8 w R). Like the truth, the force has a kink where loading
    turns to unloading. The history resets (next step loads afresh) when
-   the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R).
+   the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R);
+   a contact that has not touched starts at h = X_CUT = 12
+   (dc_gwa_table_apart).
    Work of adhesion 0: force and stiffness exactly 0.
    Error against the exact law (tests/unit/test_gw_rough_adhesive_table.c:
    every cell of the table, 4 points per eta cell, 60 per x band, and 1500
@@ -264,6 +266,21 @@ void dc_gwa_table_memo_init(dc_gwa_table_memo *m);
    kept for another radius is renewed first): the same bits. */
 int dc_gwa_table_step_memo(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
                            double delta, double *hist, dc_gwa_table_out *o);
+
+/* Apart: a contact that has not touched (hist[0] = 0) with the summits
+   more than X_CUT sigma apart (h > X_CUT) feels no force and stays
+   untouched: the step returns F = kn = 0 and leaves hist as it is. There
+   the table's G is below 2.6e-30 on every eta row (the continuation
+   beyond X_HI, which bounds the Gaussian tail from above), so the cut is
+   a jump below 2.6e-30 n_asp 8 w R. A caller may test it before setting
+   anything else up (it reads only sigma): with a contact distance well
+   beyond the reach (polydisperse spheres need it) most close pairs are
+   that far apart. */
+#define DC_GWA_TABLE_X_CUT 12.0
+static inline int dc_gwa_table_apart(const dc_gwa_table_pair *p, double delta, const double *hist)
+{
+  return hist[0] == 0.0 && -delta * p->inv_sigma > DC_GWA_TABLE_X_CUT;
+}
 
 /* Reach: the separation (-delta) beyond which the force is below
    1e-15 n_asp w R on either branch: (D + 8) sigma. */
