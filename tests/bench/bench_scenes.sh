@@ -52,6 +52,10 @@ configs=(
   "sra|$sph|gw_rough|10000|1|-var cdf 1.12 -var coh 1"
   "sre|$sph|gw_rough|10000|1|-var cdf 1.12 -var gwe 1"
   "sr2|$sph|gw_rough|10000|1|-var cdf 1.12"
+  # the same on polydisperse spheres (d 2.6-3.4 mm: every contact has its
+  # own radius, nothing set up per radius is reused)
+  "spa|$sph|gw_rough|10000|1|-var cdf 1.14 -var coh 1 -var poly 1"
+  "spe|$sph|gw_rough|10000|1|-var cdf 1.14 -var gwe 1 -var poly 1"
   # the laws' own cost: the same contact distance without the rough law,
   # and each law on the Hertz trajectory (w, sigma practically 0)
   "sh5|$sph|hertz|10000|1|-var cdf 1.09"
@@ -147,6 +151,8 @@ if "sr" not in t:
     row(lambda sra, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
         "%.3f s = %.4f x gw_rough (default law, %.3f s), %.4f x gw_rough gwElliptic on (%.3f s)"
         % (sra, sra / sr2, sr2, sra / sre, sre), "sra", "sr2", "sre")
+row(lambda spa, spe: "    polydisperse (d 2.6-3.4 mm, contact distance 1.14): with cohesion %.3f s = %.4f x gw_rough "
+    "gwElliptic on (%.3f s)" % (spa, spa / spe, spe), "spa", "spe")
 row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
     "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1), "sh1", "sr0")
 row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")
