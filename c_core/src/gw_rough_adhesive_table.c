@@ -409,6 +409,7 @@ static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_t
   }
   double G, Gx;
   reduced(b, x, &r->cell, m, &G, &Gx);
+  if (r->ell.on) dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, &G, &Gx);
   *F = r->Fs * G;
   *kn = -r->Fs * Gx * p->inv_sigma;
   return isfinite(*F) && isfinite(*kn) ? DC_OK : DC_ERANGE;
@@ -567,4 +568,9 @@ int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double
   const int st = dc_gwa_table_radius_init(p, R, &r);
   if (st != DC_OK) return st;
   return dc_gwa_table_step_radius(p, &r, delta, hist, o);
+}
+
+void dc_gwa_table_eta_cell(double eta, dc_gwa_table_eta *c)
+{
+  eta_cell(eta, c);
 }

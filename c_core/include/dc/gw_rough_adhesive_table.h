@@ -16,13 +16,12 @@
    branch b (loading / unloading). E*, w, R, sigma, n_asp enter only through
    F_s, delta_c and tau. F_gw is the closed form of dc_gw_rough_elliptic
    (review Eqs. 31-36) for the same n_asp and sigma. For elliptic summits
-   the summit law also depends on R_minor/R_major (the elliptic factor):
-   not tabulated here (use dc_gw_rough_adhesive). No equivalent circle
-   stands in for it: the table at R = (R_major R_minor)^1/2 is 5e-5 from
-   the elliptic law's adhesive part at a ratio of 0.97, 6e-4 at 0.9, 2.6e-2
-   at 0.5, 0.27 at 0.1 (tests/reference/gwa_elliptic_factor.c); a table
-   for superquadrics needs the ratio as a third coordinate (with D and the
-   scales of the dc_jkr_geom at that ratio).
+   the summit law also depends on R_minor/R_major: no equivalent circle
+   stands in for it (the table at R = (R_major R_minor)^1/2 is 2.6e-2 from
+   the elliptic law's adhesive part at a ratio of 0.5, 0.27 at 0.1;
+   tests/reference/gwa_elliptic_factor.c), so elliptic summits take the
+   circular table at matched scales times a correction tabulated in the
+   ratio ("Elliptic summits" below).
    G < 0 everywhere (every attached summit pulls more than its Hertz
    counterpart; checked at every node by the generator). Deep in
    compression G -> -pi/8 (f_JKR - f_Hertz -> -pi w R), with a u^-3/4 tail.
@@ -204,6 +203,82 @@ typedef struct {
   double w[4];
 } dc_gwa_table_eta;
 
+/* Elliptic summits (superquadric contacts, relative radii R_major >=
+   R_minor, ratio rho = R_minor/R_major): the circular table at matched
+   scales times a correction. The matched scales are those of the elliptic
+   JKR summit's separation point (dc_jkr_geometry): delta_c = delta_break
+   / ub, F_s = F_break/(-5 pi/48), so D and the unloading x are exact;
+   with them G_ell = r T - k_e C (loading: C = 0), T = G + C the circular
+   table's smoothed value and C its kink term (dc_gwa_table_kink), k_e the
+   elliptic summits' Hertz closed form over the matched circle's, and r
+   tabulated as ln r in (ln rho, xi(x), eta) by
+   tests/reference/gen_gw_rough_adhesive_elliptic.c from the exact law
+   (dc_gw_rough_adhesive with dc_jkr_geometry summits): Catmull-Rom in
+   each coordinate (C1 in x), ln rho on [ln RHO_MIN, 0] (NR cells), xi =
+   x for x >= -6 and -6 - 6 LAMBDA ln(1 + ln(x/-6)/LAMBDA) below (C1;
+   nodes 1/XI_PER_UNIT apart on [XI_LO, XI_HI], x from -1.05e4 to 8),
+   eta rows 1/2 apart loading, 1/8 unloading (the kink moves with eta;
+   the circular table's eta clamping applies). The scales (ln(delta_c /
+   delta_c,circle(R_major)), ln(F_s/8 w R_major), k_e, ln r_oo) in ln rho
+   at 32 nodes per cell. Beyond the grid: r held at x > 8 (force < 1e-15
+   n_asp w R); below x_lo = x(XI_LO) every summit is pressed and the
+   kink-free ratio G_ell/G = r_oo + (its value at x_lo - r_oo)
+   (x_lo/x)^3/4, r_oo that of one summit's adhesive parts at infinite
+   compression (whose d^-3/4 tail this is; the kink term decays as d^-1/2
+   and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN (the
+   caller warns: the correction keeps growing below, r = 2.3 at 1e-4).
+   Error against the exact law (tests/unit/test_gw_rough_adhesive_elliptic.c,
+   2400 random points in physical units, rho 1e-3 to 1, tau over the
+   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 1.0e-4
+   (7.5e-5 at rho >= 0.01), unloading 2.1e-4 (5.9e-5; the worst near the
+   summits' kink, x ~ -D, at rho < 0.003); dF/d delta 4.1e-4 and 1.3e-3
+   (Catmull-Rom slopes; kn is the exact derivative of the interpolated F);
+   beyond x_lo 5.8e-5 (below 2e-8 of the whole force); the matched scales
+   within 5e-10 of dc_jkr_geometry. Cost: ~300 ns per set-up and step
+   (the unit test), against ~30 us for the exact law. */
+#define DC_GWAE_RHO_MIN 1e-3
+#define DC_GWAE_NR 18
+#define DC_GWAE_LAMBDA 3.0
+#define DC_GWAE_XI_LO (-28.5)
+#define DC_GWAE_XI_HI 8.0
+#define DC_GWAE_XI_PER_UNIT 2
+#define DC_GWAE_NXI 73                  /* cells on [XI_LO, XI_HI] */
+#define DC_GWAE_ETA_PER_UNIT_L 2
+#define DC_GWAE_ETA_PER_UNIT_U 8
+#define DC_GWAE_NETA_L 25               /* eta cells on [ETA_LO, 8] */
+#define DC_GWAE_NETA_U 100
+#define DC_GWAE_SCALE_PER_CELL 32
+
+/* xi(x) of the correction grid and dxi/dx */
+static inline double dc_gwae_xi(double x, double *dxi)
+{
+  if (x >= -6.0) { *dxi = 1.0; return x; }
+  const double L = log(x / -6.0), q = 1.0 + L / DC_GWAE_LAMBDA;
+  *dxi = -6.0 / (x * q);
+  return -6.0 - 6.0 * DC_GWAE_LAMBDA * log(q);
+}
+
+/* x at xi (the inverse of dc_gwae_xi) */
+static inline double dc_gwae_x_of_xi(double xi)
+{
+  return xi >= -6.0 ? xi : -6.0 * exp(DC_GWAE_LAMBDA * expm1((-6.0 - xi) / (6.0 * DC_GWAE_LAMBDA)));
+}
+
+/* The correction's cell for one contact: ln rho and eta weights. */
+typedef struct {
+  int on;           /* 0: circular summits, no correction */
+  int i;            /* ln rho cell */
+  int j[2];         /* eta cell per branch */
+  double wr[4];     /* Catmull-Rom weights in ln rho */
+  double we[2][4];  /* in eta, per branch */
+  double ke;        /* k_e */
+  double lr_inf;    /* ln r_oo */
+  double rho;       /* the ratio used (rho clamped to [RHO_MIN, 1]) */
+} dc_gwa_table_ell;
+
+/* The eta cell at eta (clamped to the table's rows). */
+void dc_gwa_table_eta_cell(double eta, dc_gwa_table_eta *c);
+
 /* What a contact's relative radius R fixes, for dc_gwa_table_step_radius:
    a caller may keep it while R stays the same (monodisperse spheres, a
    sphere on walls). */
@@ -214,11 +289,24 @@ typedef struct {
   double D;            /* db / sigma */
   double reach;        /* dc_gwa_table_reach [m] */
   dc_gwa_table_eta cell;   /* eta = ln tau */
+  dc_gwa_table_ell ell;    /* elliptic summits (on = 0 for circles) */
 } dc_gwa_table_radius;
 
 /* Set-up per radius R > 0 (else DC_EDOM, *r untouched; DC_ERANGE if a
    product overflows). w = 0: only r->R is set. */
 int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_radius *r);
+
+/* Set-up for elliptic summits of relative radii R_major >= R_minor > 0
+   (a superquadric contact): *r then serves dc_gwa_table_step_radius as
+   for a circle (R = R_major; R_minor = R_major gives the circle's forces
+   within the correction's error). DC_EDOM for radii out of order, not
+   positive or not finite; DC_ERANGE as dc_gwa_table_radius_init. */
+int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
+                                      dc_gwa_table_radius *r);
+
+/* The correction applied to the circular table's G, dG/dx at (x, eta) on
+   branch b (used by the step; exposed for the generator and tests). */
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, double *G, double *Gx);
 
 /* Per-contact history: gwa_touched, gwa_delta_max (no sign flips). */
 enum { DC_GWA_TABLE_HISTORY_NFIELDS = 2 };

@@ -1,0 +1,123 @@
+/* Rough contact with elliptic adhesive (JKR) summits, tabulated: the
+   circular table of dc/gw_rough_adhesive_table.h at the elliptic summit's
+   matched scales, times a correction tabulated in (ln rho, xi(x), eta);
+   see the header's "Elliptic summits". */
+#include "dc/gw_rough_adhesive_table.h"
+#include "dc/gw_rough_adhesive.h"
+#include "dc/status.h"
+#include <float.h>
+#include <math.h>
+#include "gw_rough_adhesive_elliptic_data.h"
+
+/* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 */
+#define DC_GWAE_UB (-0.375 * 4.60115111447049)
+#define DC_GWAE_HR (6.907755278982137 / DC_GWAE_NR)   /* ln(1/RHO_MIN) / NR */
+
+/* Catmull-Rom weights of the nodes k-1 .. k+2 at t in [0, 1] of cell k */
+static inline void cr_weights(double t, double *w)
+{
+  const double t2 = t * t, t3 = t2 * t;
+  w[0] = 0.5 * (-t + 2.0 * t2 - t3);
+  w[1] = 0.5 * (2.0 - 5.0 * t2 + 3.0 * t3);
+  w[2] = 0.5 * (t + 4.0 * t2 - 3.0 * t3);
+  w[3] = 0.5 * (t3 - t2);
+}
+
+/* and their derivatives in t */
+static inline void cr_slopes(double t, double *d)
+{
+  const double t2 = t * t;
+  d[0] = 0.5 * (-1.0 + 4.0 * t - 3.0 * t2);
+  d[1] = 0.5 * (-10.0 * t + 9.0 * t2);
+  d[2] = 0.5 * (1.0 + 8.0 * t - 9.0 * t2);
+  d[3] = 0.5 * (3.0 * t2 - 2.0 * t);
+}
+
+/* cell and weights of coordinate u (in cells from the grid's start) on n cells */
+static inline int cr_cell(double u, int n, double *w)
+{
+  int k = (int)u;
+  if (k < 0) k = 0;
+  if (k > n - 1) k = n - 1;
+  cr_weights(u - k, w);
+  return k;
+}
+
+int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
+                                      dc_gwa_table_radius *r)
+{
+  if (!(R_major >= R_minor && R_minor > 0.0 && R_major <= DBL_MAX)) return DC_EDOM;
+  dc_gwa_table_radius q;
+  const int st = dc_gwa_table_radius_init(p, R_major, &q);
+  if (st != DC_OK) return st;
+  if (p->w > 0.0) {
+    dc_gwa_table_ell e = {0};
+    e.on = 1;
+    e.rho = R_minor / R_major;
+    if (e.rho < DC_GWAE_RHO_MIN) e.rho = DC_GWAE_RHO_MIN;
+    const double ur = -log(e.rho) / DC_GWAE_HR;
+    /* the scales, finer in ln rho */
+    double ws[4], s[4] = {0.0, 0.0, 0.0, 0.0};
+    const int ks = cr_cell(ur * DC_GWAE_SCALE_PER_CELL, DC_GWAE_NR * DC_GWAE_SCALE_PER_CELL, ws);
+    for (int n = 0; n < 4; n++)
+      for (int c = 0; c < 4; c++) s[c] += ws[n] * dc_gwae_scale[ks + n][c];
+    const double qd = exp(s[0]), qF = exp(s[1]);
+    e.ke = s[2];
+    e.lr_inf = s[3];
+    e.i = cr_cell(ur, DC_GWAE_NR, e.wr);
+    q.Fs *= qF;
+    q.db *= qd;
+    q.D *= qd;
+    q.reach = q.db + DC_GWA_TABLE_X_HI * p->sigma;
+    dc_gwa_table_eta_cell(p->ln_sigma_dc - log(R_major) / 3.0 - s[0], &q.cell);
+    const double eta = q.cell.eta, lo = DC_GWA_TABLE_ETA_LO;
+    e.j[0] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_NETA_L, e.we[0]);
+    e.j[1] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_U, DC_GWAE_NETA_U, e.we[1]);
+    q.ell = e;
+    if (!(isfinite(q.Fs) && isfinite(q.db) && isfinite(q.reach))) return DC_ERANGE;
+  }
+  *r = q;
+  return DC_OK;
+}
+
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, double *G, double *Gx)
+{
+  double dxi, xi = dc_gwae_xi(x, &dxi);
+  const int deep = xi < DC_GWAE_XI_LO;
+  if (deep) { xi = DC_GWAE_XI_LO; dxi = 0.0; }
+  if (xi > DC_GWAE_XI_HI) { xi = DC_GWAE_XI_HI; dxi = 0.0; }   /* r held beyond the grid */
+  double wx[4], dx[4];
+  const double ux = (xi - DC_GWAE_XI_LO) * DC_GWAE_XI_PER_UNIT;
+  const int k = cr_cell(ux, DC_GWAE_NXI, wx);
+  cr_slopes(ux - k, dx);
+  /* the 4 x 4 (eta, ln rho) nodes mixed, at the 4 xi nodes */
+  double a[4] = {0.0, 0.0, 0.0, 0.0};
+  for (int jj = 0; jj < 4; jj++)
+    for (int ii = 0; ii < 4; ii++) {
+      const double w = e->we[b][jj] * e->wr[ii];
+      const float *row = b == DC_GW_UNLOADING ? dc_gwae_unload[e->j[1] + jj][e->i + ii] + k
+                                              : dc_gwae_load[e->j[0] + jj][e->i + ii] + k;
+      for (int kk = 0; kk < 4; kk++) a[kk] += w * row[kk];
+    }
+  double lr = wx[0] * a[0] + wx[1] * a[1] + wx[2] * a[2] + wx[3] * a[3];
+  double lrx = (dx[0] * a[0] + dx[1] * a[1] + dx[2] * a[2] + dx[3] * a[3]) * DC_GWAE_XI_PER_UNIT * dxi;
+  const double r = exp(lr);
+  double C = 0.0, Cx = 0.0;
+  if (deep) {
+    /* below x_lo the kink-free ratio G_ell/G, at x_lo from the grid, tends
+       to r_oo like one summit's d^-3/4 (the kink term's d^-1/2 would
+       spoil the smoothed ratio's tail) */
+    double Gl, Gxl;
+    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &C, &Cx);
+    dc_gwa_table_reduced(b, dc_gwae_x_lo, eta, &Gl, &Gxl);
+    const double rl = (r * (Gl + C) - e->ke * C) / Gl, ri = exp(e->lr_inf);
+    const double c = (rl - ri) * pow(dc_gwae_x_lo / x, 0.75);
+    *Gx = *Gx * (ri + c) - 0.75 * c / x * *G;
+    *G *= ri + c;
+    return;
+  }
+  if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x, eta, &C, &Cx);
+  const double T = *G + C, Tx = *Gx + Cx;
+  *G = r * T - e->ke * C;
+  *Gx = r * (lrx * T + Tx) - e->ke * Cx;
+}

@@ -1,0 +1,153 @@
+/* Writes c_core/src/gw_rough_adhesive_elliptic_data.h: the correction of
+   dc/gw_rough_adhesive_table.h for elliptic summits ("Elliptic summits"
+   there), from the exact c_core law dc_gw_rough_adhesive with the
+   summits of dc_jkr_geometry(1, rho) (E* = w = R_major = n_asp = 1) less
+   the closed form dc_gw_rough_elliptic, against the circular table
+   dc_gwa_table_reduced at the matched scales:
+
+     r = (G_ell + k_e C) / (G + C)   (loading: C = 0),
+     G_ell = (F_adhesive - F_gw_elastic) / F_s,m,  F_s,m = F_break/(-5 pi/48),
+     delta_c,m = delta_break / ub, tau = sigma / delta_c,m,
+     k_e = F_gw_elastic(h = 0) / (F_s,m c_H tau^3/2 F_3/2(0)),
+
+   stored as ln r in float (7 digits, far below the interpolation error).
+   Ghost nodes (one beyond each end) from the law too, except in eta (the
+   circular table is clamped beyond its rows) and at x > 8 (the circular
+   table's continuation): there cubic extrapolation, exact for cubics.
+   The scales: ln(delta_c,m / delta_c(R_major)), ln(F_s,m / 8 w R_major),
+   k_e at SCALE_PER_CELL nodes per ln rho cell (ghosts from the law).
+   About 10 s on 2 cores with OpenMP (without it, 20 s).
+   Regenerate (from the repository root, library built in B):
+     cc -O2 -fopenmp -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gen_gw_rough_adhesive_elliptic.c \
+        B/c_core/libdemcontact.a -lgsl -lgslcblas -lm -o /tmp/gen_gwae && \
+     /tmp/gen_gwae > c_core/src/gw_rough_adhesive_elliptic_data.h */
+#include "dc/gw_integrals.h"
+#include "dc/gw_rough.h"
+#include "dc/gw_rough_adhesive.h"
+#include "dc/gw_rough_adhesive_table.h"
+#include "dc/jkr_elliptic.h"
+#include "dc/status.h"
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#define UB (-0.375 * 4.60115111447049)
+#define CH 0.15005271935951767
+#define HR (log(1.0 / DC_GWAE_RHO_MIN) / DC_GWAE_NR)
+#define NXN (DC_GWAE_NXI + 3)   /* nodes with ghosts */
+#define NRN (DC_GWAE_NR + 3)
+
+static void fail(const char *what, double lr, int b, double x, double eta)
+{
+  fprintf(stderr, "%s at ln rho %g, branch %d, x %g, eta %g\n", what, lr, b, x, eta);
+  exit(1);
+}
+
+static void geometry(double lr, dc_jkr_geom *g, double *dcm, double *Fsm)
+{
+  if (dc_jkr_geometry(1.0, exp(lr), 1.0, 1.0, g) != DC_OK) fail("dc_jkr_geometry", lr, 0, 0, 0);
+  *dcm = g->delta_break / UB;
+  *Fsm = g->F_break / (-5.0 * M_PI / 48.0);
+}
+
+/* k_e at ln rho lr */
+static double ke_of(double lr)
+{
+  dc_jkr_geom g;
+  double dcm, Fsm, F[4];
+  geometry(lr, &g, &dcm, &Fsm);
+  dc_gw_rough_state e;
+  if (dc_gw_rough_elliptic(&g.hertz, 1.0, 1.0, dcm, 0.0, &e) != DC_OK) fail("closed form", lr, 0, 0, 0);
+  dc_gw_F_all(0.0, F);
+  return e.F / (Fsm * CH * F[DC_GW_F32]);   /* tau = 1: sigma = delta_c,m */
+}
+
+/* ln r at (ln rho, branch, x, eta) */
+static double ln_ratio(double lr, int b, double x, double eta)
+{
+  dc_jkr_geom g;
+  double dcm, Fsm, G, Gx, C = 0.0, Cx = 0.0;
+  geometry(lr, &g, &dcm, &Fsm);
+  const double sigma = exp(eta) * dcm, D = -g.delta_break / sigma, h = b ? x + D : x;
+  dc_gw_adhesive_state s;
+  dc_gw_rough_state e;
+  if (dc_gw_rough_adhesive(&g, 1.0, sigma, -h * sigma, b, &s) != DC_OK ||
+      dc_gw_rough_elliptic(&g.hertz, 1.0, 1.0, sigma, -h * sigma, &e) != DC_OK ||
+      dc_gwa_table_reduced(b, x, eta, &G, &Gx) != DC_OK)
+    fail("law", lr, b, x, eta);
+  if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x, eta, &C, &Cx);
+  const double r = ((s.F - e.F) / Fsm + ke_of(lr) * C) / (G + C);
+  if (!(r > 0.0 && isfinite(r))) fail("ratio not positive", lr, b, x, eta);
+  return log(r);
+}
+
+static void branch_table(int b, int ne, int per_unit, float *t)
+{
+#define AT(j, i, k) t[((size_t)(j) * NRN + (i)) * NXN + (k)]
+#pragma omp parallel for schedule(dynamic)
+  for (int j = 0; j <= ne; j++)
+    for (int i = -1; i <= DC_GWAE_NR + 1; i++)
+      for (int k = -1; k <= DC_GWAE_NXI; k++)
+        AT(j + 1, i + 1, k + 1) = (float)ln_ratio(-i * HR, b, dc_gwae_x_of_xi(DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT),
+                                                  DC_GWA_TABLE_ETA_LO + (double)j / per_unit);
+  for (int j = 1; j <= ne + 1; j++)
+    for (int i = 0; i < NRN; i++) {
+      float *r = &AT(j, i, 0);
+      r[NXN - 1] = 3.0f * r[NXN - 2] - 3.0f * r[NXN - 3] + r[NXN - 4];
+    }
+  for (int i = 0; i < NRN; i++)
+    for (int k = 0; k < NXN; k++) {
+      AT(0, i, k) = 3.0f * AT(1, i, k) - 3.0f * AT(2, i, k) + AT(3, i, k);
+      AT(ne + 2, i, k) = 3.0f * AT(ne + 1, i, k) - 3.0f * AT(ne, i, k) + AT(ne - 1, i, k);
+    }
+#undef AT
+}
+
+static void print_table(const char *name, int ne, const float *t)
+{
+  printf("static const float %s[%d][%d][%d] = {\n", name, ne + 3, NRN, NXN);
+  for (int j = 0; j < ne + 3; j++) {
+    printf("{\n");
+    for (int i = 0; i < NRN; i++) {
+      printf("{");
+      for (int k = 0; k < NXN; k++) printf("%.7g%s", t[((size_t)j * NRN + i) * NXN + k], k + 1 < NXN ? "," : "");
+      printf("}%s\n", i + 1 < NRN ? "," : "");
+    }
+    printf("}%s\n", j + 1 < ne + 3 ? "," : "");
+  }
+  printf("};\n");
+}
+
+int main(void)
+{
+  const int ne[2] = {DC_GWAE_NETA_L, DC_GWAE_NETA_U}, pu[2] = {DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_ETA_PER_UNIT_U};
+  float *t[2];
+  for (int b = 0; b < 2; b++) {
+    t[b] = malloc(sizeof(float) * (ne[b] + 3) * NRN * NXN);
+    if (!t[b]) return 1;
+    branch_table(b, ne[b], pu[b], t[b]);
+  }
+  const int ns = DC_GWAE_NR * DC_GWAE_SCALE_PER_CELL;
+  printf("/* Generated by tests/reference/gen_gw_rough_adhesive_elliptic.c: do not edit.\n"
+         "   ln r per branch [eta node][ln rho node][xi node], each with one ghost\n"
+         "   node first; the scales per ln rho node (SCALE_PER_CELL per cell, one\n"
+         "   ghost first): ln(delta_c,m/delta_c(R_major)), ln(F_s,m/8 w R_major), k_e,\n"
+         "   ln r_oo; x_lo = x(XI_LO)\n"
+         "   (dc/gw_rough_adhesive_table.h, \"Elliptic summits\"). */\n");
+  printf("static const double dc_gwae_x_lo = %.17g;\n", dc_gwae_x_of_xi(DC_GWAE_XI_LO));
+  printf("static const double dc_gwae_scale[%d][4] = {\n", ns + 3);
+  const double dc1 = 0.5 * pow(8.0 / M_PI, 2.0 / 3.0);   /* delta_c of the circle R = 1 */
+  for (int n = -1; n <= ns + 1; n++) {
+    const double lr = -n * HR / DC_GWAE_SCALE_PER_CELL;
+    dc_jkr_geom g;
+    double dcm, Fsm;
+    geometry(lr, &g, &dcm, &Fsm);
+    /* r_oo: at eta = 8, x = -1e4 the summits' mean compression is 3e7 delta_c */
+    printf("{%.17g,%.17g,%.17g,%.17g}%s\n", log(dcm / dc1), log(Fsm / 8.0), ke_of(lr),
+           ln_ratio(lr, DC_GW_LOADING, -1e4, 8.0), n <= ns ? "," : "");
+  }
+  printf("};\n");
+  print_table("dc_gwae_load", ne[0], t[0]);
+  print_table("dc_gwae_unload", ne[1], t[1]);
+  return 0;
+}
