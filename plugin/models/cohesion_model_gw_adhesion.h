@@ -10,8 +10,11 @@
      gw_rough), surfaceRoughness (peratomtype, m: sigma = (sigma_i^2 +
      sigma_j^2)^1/2 per pair) and asperityCount (peratomtypepair) as
      gw_rough, youngsModulus and poissonsRatio (E*).
-   Spheres only (circular summits); pairs with sigma = 0 get no force. The
-   force acts from the Gaussian tail of the summit heights on (12 sigma
+   Spheres (circular summits) and superquadrics (elliptic summits of the
+   contact's relative principal radii, dc_gwa_table_radius_init_elliptic;
+   the overlap before touch from superquadric_gap.h, the radii from
+   superquadric_curvature.h with gw_rough's maxRadiusFactor). Pairs with
+   sigma = 0 get no force. The force acts from the Gaussian tail of the summit heights on (12 sigma
    apart, dc_gwa_table_apart) and, once pressed, until the lowest attached summit
    lets go, (D + 8) sigma apart at most
    (dc_gwa_table_reach): the deck must set contact_distance_factor so that
@@ -38,6 +41,10 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive_table.h"
 #include "dc/status.h"
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+#include "superquadric_curvature.h"
+#include "superquadric_gap.h"
+#endif
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -47,20 +54,28 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 {
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    CohesionModelBase(lmp, hsetup, c), history_offset(-1), ntypes(0)
+    CohesionModelBase(lmp, hsetup, c), history_offset(-1), ntypes(0), maxRadiusFactor(100.0), warnedRatio(false)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
       if (k == 0) history_offset = off;
     }
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    gap.addHistory(lmp, hsetup);
+#endif
   }
 
-  void registerSettings(Settings &) {}
+  /* the normal model's setting (the same value) */
+  void registerSettings(Settings &settings) { settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0); }
 
-  void postSettings(IContactHistorySetup *, ContactModelBase *)
+  void postSettings(IContactHistorySetup *, ContactModelBase *cmb)
   {
-    if (atom->superquadric_flag)
-      error->all(FLERR, "Cohesion model gw_adhesion: spheres only (the table covers circular summits)");
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    curvature.setup(lmp, cmb, maxRadiusFactor, "gw_adhesion", "Cohesion model");
+    gap.setup(lmp, cmb);
+#else
+    (void)cmb;
+#endif
   }
 
   void connectToProperties(PropertyRegistry &registry)
@@ -96,6 +111,12 @@ public:
 
   void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (sidata.is_non_spherical && atom->superquadric_flag) {
+      adhesionSuperquadric(sidata, sidata.deltan, i_forces, j_forces);
+      return;
+    }
+#endif
     adhesion(sidata, sidata.deltan, i_forces, j_forces);
   }
 
@@ -104,6 +125,20 @@ public:
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (atom->superquadric_flag) {
+      const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
+      if (p.sigma == 0.0) return;
+      /* untouched: the force starts 12 sigma apart; touched: anywhere in the neighbour list */
+      const double *h = &sidata.contact_history[history_offset];
+      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
+      const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;
+      double delta, vn;
+      if (!gap.closeOverlap(lmp, sidata, range, delta, vn)) return;
+      if (adhesionSuperquadric(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
+      return;
+    }
+#endif
     const double delta = closeSphereOverlap(scdata);
     if (adhesion(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
   }
@@ -113,6 +148,41 @@ public:
   inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  /* A superquadric contact at overlap delta: the elliptic summits of its
+     relative radii; false when no force acts. */
+  bool adhesionSuperquadric(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
+  {
+    const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
+    if (p.sigma == 0.0) return false;
+    if (dc_gwa_table_apart(&p, delta, &sidata.contact_history[history_offset])) {
+      if (sidata.contact_flags) *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
+      return false;
+    }
+    double R_major, R_minor;
+    curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_adhesion");
+    dc_gwa_table_radius rad;
+    const int st = dc_gwa_table_radius_init_elliptic(&p, R_major, R_minor, &rad);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: relative radii %g, %g: %s", R_major, R_minor,
+               dc_status_str(st));
+      error->one(FLERR, msg);
+    }
+    if (!warnedRatio && R_minor < DC_GWAE_RHO_MIN * R_major) {
+      warnedRatio = true;
+      char msg[320];
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: atoms %d and %d touch with relative radii %g and %g, a "
+               "ratio below %g: the elliptic summits are taken at that ratio, whose adhesive force can be "
+               "several times smaller (a smaller maxRadiusFactor keeps flat faces in range); warned once",
+               (int)atom->tag[sidata.i], sidata.is_wall ? 0 : (int)atom->tag[sidata.j], R_major, R_minor,
+               DC_GWAE_RHO_MIN);
+      error->warning(FLERR, msg);
+    }
+    return stepAndApply(sidata, p, rad, NULL, delta, i_forces, j_forces);
+  }
+#endif
+
   /* Applies the adhesive force at overlap delta; false when none acts. */
   bool adhesion(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
   {
@@ -134,6 +204,17 @@ private:
         error->one(FLERR, msg);
       }
     }
+    /* the table's cells at this radius, memoised per type pair */
+    if (!memos[k]) memos[k].reset(new dc_gwa_table_memo());
+    return stepAndApply(sidata, p, rad, memos[k].get(), delta, i_forces, j_forces);
+  }
+
+  /* One step of the law on the contact's history (a scratch copy on a pass
+     that must not change it; memo NULL: none), the force applied; false
+     when none acts. */
+  bool stepAndApply(SurfacesIntersectData &sidata, const dc_gwa_table_pair &p, const dc_gwa_table_radius &rad,
+                    dc_gwa_table_memo *memo, double delta, ForceData &i_forces, ForceData &j_forces)
+  {
     double *h = &sidata.contact_history[history_offset];
     double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
     if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
@@ -149,13 +230,12 @@ private:
         error->one(FLERR, msg);
       }
     }
-    /* the table's cells at this radius, memoised per type pair */
-    if (!memos[k]) memos[k].reset(new dc_gwa_table_memo());
     dc_gwa_table_out o;
-    const int st = dc_gwa_table_step_memo(&p, &rad, memos[k].get(), delta, h, &o);
+    const int st = memo ? dc_gwa_table_step_memo(&p, &rad, memo, delta, h, &o)
+                        : dc_gwa_table_step_radius(&p, &rad, delta, h, &o);
     if (st != DC_OK) {
       char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, rad.R, dc_status_str(st));
       error->one(FLERR, msg);
     }
     if (sidata.contact_flags) {
@@ -168,6 +248,12 @@ private:
   }
 
   int history_offset, ntypes;
+  double maxRadiusFactor;
+  bool warnedRatio;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+  SuperquadricCurvature curvature;
+  SuperquadricGap gap;
+#endif
   std::vector<dc_gwa_table_pair> pairs;
   std::vector<dc_gwa_table_radius> radii;
   std::vector<std::unique_ptr<dc_gwa_table_memo> > memos;   /* allocated on a pair's first step */

@@ -28,13 +28,15 @@ public:
   SuperquadricCurvature() : alpha_i_offset_(-1), alpha_j_offset_(-1), max_radius_factor_(0.0), kind_("Normal model"),
     cache_offset_(-1), payload_(0), tol_(0.0), motion_(0.0), fresh_(-1), capped_(false) {}
 
-  /* Call from postSettings. `model` names the normal model in messages.
-     Checks the maxRadiusFactor setting's range on every run. */
-  void setup(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb, double max_radius_factor, const char *model)
+  /* Call from postSettings. `model` names the model in messages, `kind`
+     its kind. Checks the maxRadiusFactor setting's range on every run. */
+  void setup(LAMMPS_NS::LAMMPS *lmp, ContactModelBase *cmb, double max_radius_factor, const char *model,
+             const char *kind = "Normal model")
   {
+    kind_ = kind;
     if (!(max_radius_factor > 1.0 && max_radius_factor <= 1e12)) {
       char msg[128];
-      snprintf(msg, sizeof msg, "Normal model %s: maxRadiusFactor must be in (1, 1e12]", model);
+      snprintf(msg, sizeof msg, "%s %s: maxRadiusFactor must be in (1, 1e12]", kind, model);
       lmp->error->all(FLERR, msg);
     }
     if (!lmp->atom->superquadric_flag) return;
@@ -42,7 +44,7 @@ public:
     alpha_j_offset_ = cmb->get_history_offset("alpha2_offset");
     if (alpha_i_offset_ < 0 || alpha_j_offset_ < 0) {
       char msg[256];
-      snprintf(msg, sizeof msg, "Normal model %s with atom_style superquadric needs 'surface superquadric' in the same pair_style gran / fix wall/gran line", model);
+      snprintf(msg, sizeof msg, "%s %s with atom_style superquadric needs 'surface superquadric' in the same pair_style gran / fix wall/gran line", kind, model);
       lmp->error->all(FLERR, msg);
     }
     max_radius_factor_ = max_radius_factor;
@@ -281,7 +283,7 @@ private:
 
   int alpha_i_offset_, alpha_j_offset_;
   double max_radius_factor_;
-  const char *kind_;   /* "Normal model" or "Rolling model", in messages */
+  const char *kind_;   /* "Normal model", "Cohesion model" or "Rolling model", in messages */
   int cache_offset_, payload_;
   double tol_;
   double probe_[ALLOW];   /* this step's state and motion, from reuse() to keep() */
