@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include "atom.h"
+#include "update.h"
 #include "contact_interface.h"
 #include "contact_models.h"
 #include "error.h"
@@ -168,10 +169,26 @@ public:
     dc_tangent_basis(sidata.en, u, v);
     double pi[3], pj[3];
     contactPoints(sidata, pi, pj);
-    bodyForm(atom, sidata.i, pi, u, v, form, lmp, model);
-    if (!sidata.is_wall) {
-      bodyForm(atom, sidata.j, pj, u, v, form_j, lmp, model);
-      form[0] += form_j[0]; form[1] += form_j[1]; form[2] += form_j[2];
+    /* the sub-models of one contact ask in turn: the last answer is kept */
+    FormMemo &m = formMemo();
+    const long step = (long)lmp->update->ntimestep;
+    if (m.step == step && m.i == sidata.i && m.j == (sidata.is_wall ? -1 : sidata.j) &&
+        !memcmp(m.en, sidata.en, sizeof m.en) && !memcmp(m.pi, pi, sizeof m.pi) &&
+        (sidata.is_wall || !memcmp(m.pj, pj, sizeof m.pj))) {
+      memcpy(form, m.form, sizeof form);
+    } else {
+      bodyForm(atom, sidata.i, pi, u, v, form, lmp, model);
+      if (!sidata.is_wall) {
+        bodyForm(atom, sidata.j, pj, u, v, form_j, lmp, model);
+        form[0] += form_j[0]; form[1] += form_j[1]; form[2] += form_j[2];
+      }
+      m.step = step;
+      m.i = sidata.i;
+      m.j = sidata.is_wall ? -1 : sidata.j;
+      memcpy(m.en, sidata.en, sizeof m.en);
+      memcpy(m.pi, pi, sizeof m.pi);
+      memcpy(m.pj, pj, sizeof m.pj);
+      memcpy(m.form, form, sizeof m.form);
     }
     double k1, k2;
     dc_form_principal(form, &k1, &k2, 0);
@@ -283,6 +300,18 @@ private:
 
   int alpha_i_offset_, alpha_j_offset_;
   double max_radius_factor_;
+  /* The last contact's relative curvature form (step, atoms, normal and
+     contact points: the same inputs give the same form). */
+  struct FormMemo {
+    long step;
+    int i, j;
+    double en[3], pi[3], pj[3], form[3];
+  };
+  static FormMemo &formMemo()
+  {
+    static FormMemo m = {-1, -1, -1, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
+    return m;
+  }
   const char *kind_;   /* "Normal model", "Cohesion model" or "Rolling model", in messages */
   int cache_offset_, payload_;
   double tol_;

@@ -75,6 +75,29 @@ private:
     LAMMPS_NS::Atom *atom = lmp->atom;
     double *hist = sidata.contact_history;
     const int i = sidata.i, j = sidata.j;
+    /* the sub-models of one pair ask in turn (gw_rough, then gw_adhesion
+       with a longer range): the last pair's answer is kept */
+    GapMemo &m = gapMemo();
+    const long step = (long)lmp->update->ntimestep;
+    const bool same = m.step == step && m.hist == hist && m.i == i && m.j == j;
+    if (same && m.measured) {
+      hist[warm_offset_] = 1.0;
+      if (!(m.delta > -range)) return false;
+      delta = m.delta;
+      sidata.is_non_spherical = true;
+      LAMMPS_NS::vectorCopy3D(m.en, sidata.en);
+      LAMMPS_NS::vectorCopy3D(m.cp, sidata.contact_point);
+      sidata.meff = sidata.mi * sidata.mj / (sidata.mi + sidata.mj);
+      vn = contactNormalVelocity(atom, sidata);
+      return true;
+    }
+    if (same && range <= m.box_range) return false;   /* the boxes, grown by more, were apart */
+    m.step = step;
+    m.hist = hist;
+    m.i = i;
+    m.j = j;
+    m.measured = false;
+    m.box_range = -1.0;
     Superquadric pi(atom->x[i], atom->quaternion[i], atom->shape[i], atom->blockiness[i]);
     Superquadric pj(atom->x[j], atom->quaternion[j], atom->shape[j], atom->blockiness[j]);
     double *cp = &hist[cp_offset_];
@@ -93,6 +116,7 @@ private:
       Superquadric gj(atom->x[j], atom->quaternion[j], sj, atom->blockiness[j]);
       if (!MathExtraLiggghtsNonspherical::obb_intersect(&gi, &gj)) {
         hist[warm_offset_] = 0.0;
+        m.box_range = range;
         return false;
       }
       double found[3];
@@ -126,6 +150,10 @@ private:
     MathExtraLiggghtsNonspherical::extended_overlap_algorithm(&pi, &pj, en, &hist[alpha_i_offset_],
         &hist[alpha_j_offset_], cp, p_i, p_j, d);
     delta = LAMMPS_NS::vectorDot3D(d, en);
+    m.measured = true;
+    m.delta = delta;
+    LAMMPS_NS::vectorCopy3D(en, m.en);
+    LAMMPS_NS::vectorCopy3D(cp, m.cp);
     if (!(delta > -range)) return false;
 
     /* LIGGGHTS sets this flag only for pairs whose bounding spheres overlap */
@@ -155,6 +183,21 @@ private:
   }
 
   enum { SURFACES_FAR, SURFACES_CLOSE }; /* surface_model_superquadric.h's states */
+
+  /* The last pair's gap: measured (delta, normal, contact point), or its
+     bounding boxes apart when grown by box_range. */
+  struct GapMemo {
+    long step;
+    const double *hist;
+    int i, j;
+    bool measured;
+    double box_range, delta, en[3], cp[3];
+  };
+  static GapMemo &gapMemo()
+  {
+    static GapMemo m = {-1, NULL, -1, -1, false, -1.0, 0.0, {0, 0, 0}, {0, 0, 0}};
+    return m;
+  }
   int cp_offset_, seen_offset_, alpha_i_offset_, alpha_j_offset_, warm_offset_;
 };
 

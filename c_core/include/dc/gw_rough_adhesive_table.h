@@ -226,7 +226,7 @@ typedef struct {
    (x_lo/x)^3/4, r_oo that of one summit's adhesive parts at infinite
    compression (whose d^-3/4 tail this is; the kink term decays as d^-1/2
    and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN (the
-   caller warns: the correction keeps growing below, r = 2.3 at 1e-4).
+   caller warns: the correction keeps growing below, r ~ 3.3 at 1e-4 against 1.8 at 1e-3).
    Error against the exact law (tests/unit/test_gw_rough_adhesive_elliptic.c,
    2400 random points in physical units, rho 1e-3 to 1, tau over the
    table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 1.0e-4
