@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Regression: small adhesive agglomerates of 125 spheres on 1 and 2 MPI
 ranks, smooth (jkr_elliptic, in.adhesive_agglomerate) and rough (gw_rough
-with cohesion gw_adhesion, in.rough_agglomerate). Contacts are kept across
+with cohesion gw_adhesion, in.rough_agglomerate), and of 64 rough adhesive
+superquadrics (in.rough_superquadric_agglomerate; force sums on 2 ranks
+within 1e-4, the contact-point solver's level, contact counts equal). Contacts are kept across
 the rank boundary and neighbour rebuilds through LIGGGHTS' contact history:
 the contact count must agree exactly and the sum of force magnitudes to 1e-9
 (different summation order only; seen: 1e-14) on every output row, the
@@ -19,10 +21,15 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from regress import ROOT, compare_tables, run, save_reference, start, table
 
 work, update, c = start()
-# deck, least final contact count (counted per atom, summed)
-CASES = (("adhesive_agglomerate", 200), ("rough_agglomerate", 50))
+# deck, least final contact count (counted per atom, summed), tolerance of
+# the force sum on 2 ranks against 1: spheres differ by the summation order
+# only (seen 1e-14); superquadrics also by LIGGGHTS' contact-point solver,
+# which a pair across the rank boundary starts from the other body's side:
+# it converges to its own tolerance (seen 1.3e-6), and the contacts stay the same
+CASES = (("adhesive_agglomerate", 200, 1e-9), ("rough_agglomerate", 50, 1e-9),
+         ("rough_superquadric_agglomerate", 60, 1e-4))
 final = {}
-for case, least in CASES:
+for case, least, tol in CASES:
     rows = {}
     for ranks in (1, 2):
         d = os.path.join(work, "%s_ranks%d" % (case, ranks))
@@ -35,7 +42,7 @@ for case, least in CASES:
     c.true(len(one) == len(two) and all(a[1] == b[1] for a, b in zip(one, two)),
            "%s: contact count equal on 1 and 2 ranks on every row (final %d and %d)" % (case, one[-1][1], two[-1][1]))
     worst = max(abs(a[2] - b[2]) / a[2] for a, b in zip(one, two) if a[2] > 0)
-    c.true(worst < 1e-9, "%s: force sum, 2 ranks vs 1: worst rel. difference %.3g (tol 1e-9)" % (case, worst))
+    c.true(worst < tol, "%s: force sum, 2 ranks vs 1: worst rel. difference %.3g (tol %g)" % (case, worst, tol))
     c.true(one[-1][1] > least, "%s: agglomerate formed: %d contacts (per atom, summed; > %d)" % (case, one[-1][1], least))
     c.true(one[-1][3] < 0.5 * one[0][3], "%s: contacts dissipate: kinetic energy fell from %.3g to %.3g J (to < 1/2)"
            % (case, one[0][3], one[-1][3]))
@@ -50,4 +57,11 @@ w0 = table(os.path.join(d, "agglomerate.txt"))[-1]
 c.true(w0[1] == 0 and w0[3] > 1.5 * final["rough_agglomerate"][3],
        "rough agglomerate without adhesion: %d contacts (with: %d), kinetic energy %.3g J (with: %.3g J)"
        % (w0[1], final["rough_agglomerate"][1], w0[3], final["rough_agglomerate"][3]))
+d = os.path.join(work, "rough_superquadric_agglomerate_w0")
+run("adhesive_agglomerate/in.rough_superquadric_agglomerate", d, variables={"w": 0}, tag="w0")
+w0 = table(os.path.join(d, "agglomerate.txt"))[-1]
+sq = final["rough_superquadric_agglomerate"]
+c.true(w0[1] < sq[1] and w0[3] > sq[3],
+       "rough superquadrics without adhesion: %d contacts (with: %d), kinetic energy %.3g J (with: %.3g J)"
+       % (w0[1], sq[1], w0[3], sq[3]))
 c.finish()
