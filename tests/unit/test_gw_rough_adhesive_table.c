@@ -581,8 +581,99 @@ static void test_memo(void)
   printf("memo: %d steps, the same bits as dc_gwa_table_step_radius: %s\n", calls, same ? "yes" : "no");
 }
 
+/* dc_gwa_table_step_contact: the bits of dc_gwa_table_step_radius (and
+   the same history) along random contacts, each with its own radius and
+   record: settled stretches (small wanders inside one cell: the kept cell
+   read), walks across cells and jumps (a new cell formed: the kept one
+   replaced), both branches and the band, the blend, the deep region and
+   beyond it, the kink term (small tau), tau clamped at both ends, w = 0;
+   a record carried over as a restart would (copied) and re-set-up when R
+   changes; every path counted so that none goes untested. */
+static void test_contact(void)
+{
+  const double E = 2.7e6;
+  const double ws[] = {0.05, 5e-4, 50.0, 0.0, 5e-9, 5e5};
+  unsigned long long x = 88172645463325252ull;
+  int same = 1, calls = 0, hits = 0, misses = 0, band = 0, unl = 0, kink = 0, deep = 0, beyond = 0, reinit = 0;
+  for (int k = 0; k < 6; k++) {
+    const double sigma = k == 4 ? 2.1e-8 : 2.1e-5;
+    dc_gwa_table_pair p;
+    CHECK(dc_gwa_table_pair_init(E, ws[k], sigma, k == 2 ? 7.0 : 1.0, &p) == DC_OK);
+    for (int q = 0; q < 40; q++) {
+      double R = 1e-5 * exp(6.0 * check_uniform(&x));   /* 1e-5 to 4e-3 m */
+      dc_gwa_table_radius r;
+      CHECK(dc_gwa_table_radius_init(&p, R, &r) == DC_OK);
+      dc_gwa_table_contact c;
+      memset(&c, 0, sizeof c);   /* a new contact: history values start at 0 */
+      double h0[2] = {0, 0}, h1[2] = {0, 0};
+      const double scale = sigma + r.db;
+      double delta = -scale * 3.0 * check_uniform(&x);
+      for (int i = 0; i < 3000; i++) {
+        const double u = check_uniform(&x), v = check_uniform(&x);
+        if (u < 0.02) delta = -scale * 300.0 * v;                  /* deep apart, beyond */
+        else if (u < 0.04) delta = scale * 300.0 * v;              /* pressed deep, and beyond x_end */
+        else if (u < 0.10) delta = scale * (-9.0 + 12.0 * v);      /* a jump */
+        else if (u < 0.40) delta += scale * 0.3 * (v - 0.5);       /* a walk */
+        else delta += scale * 1e-4 * (v - 0.5);                    /* settled */
+        if (i == 1500) {
+          /* a restart: the record travels as history values */
+          double buf[DC_GWA_TABLE_CONTACT_NFIELDS];
+          memcpy(buf, &c, sizeof buf);
+          memcpy(&c, buf, sizeof c);
+        }
+        if (i == 2000 && q % 4 == 0) {   /* the contact's radius changes (another contact in its slot) */
+          R *= 1.0 + 1e-15 * (1 + q);
+          CHECK(dc_gwa_table_radius_init(&p, R, &r) == DC_OK);
+        }
+        if (c.R != R) {
+          CHECK(dc_gwa_table_contact_init(&p, R, &c) == DC_OK);
+          CHECK(c.cell[0] == 0.0);
+          reinit++;
+        }
+        const double key = c.cell[0];
+        dc_gwa_table_out o0, o1;
+        memset(&o0, 0, sizeof o0);
+        memset(&o1, 0, sizeof o1);
+        const int s0 = dc_gwa_table_step_radius(&p, &r, delta, h0, &o0);
+        const int s1 = dc_gwa_table_step_contact(&p, &c, delta, h1, &o1);
+        if (!(s0 == s1 && memcmp(&o0, &o1, sizeof o0) == 0 && memcmp(h0, h1, sizeof h0) == 0)) same = 0;
+        if (!(dc_gwa_table_contact_reach(&p, &c) == r.reach || p.w == 0.0)) same = 0;
+        calls++;
+        if (key != 0.0 && c.cell[0] == key) hits++;
+        else if (c.cell[0] != key) misses++;
+        if (o0.weight > 0.0 && o0.weight < 1.0) band++;
+        if (o0.weight == 1.0) unl++;
+        const double xl = -delta / sigma;
+        if (o0.weight > 0.0 && r.cell.eta < DC_GWA_KINK_K_HI && xl - r.D < DC_GWA_KINK_W_HI) kink++;
+        if (xl < DC_GWA_TABLE_BLEND_HI && xl > dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) deep++;
+        if (xl < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END) || xl - (o0.weight > 0.0 ? r.D : 0.0) > DC_GWA_TABLE_X_HI)
+          beyond++;
+      }
+    }
+  }
+  /* errors: as dc_gwa_table_radius_init, the record untouched */
+  dc_gwa_table_pair p;
+  CHECK(dc_gwa_table_pair_init(E, 0.05, 2.1e-5, 1.0, &p) == DC_OK);
+  dc_gwa_table_contact c, c0;
+  memset(&c, 0x5a, sizeof c);
+  c0 = c;
+  CHECK(dc_gwa_table_contact_init(&p, 0.0, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, -1e-3, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, NAN, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, INFINITY, &c) == DC_EDOM);
+  CHECK(memcmp(&c, &c0, sizeof c) == 0);
+  CHECK(sizeof(dc_gwa_table_contact) == DC_GWA_TABLE_CONTACT_NFIELDS * sizeof(double));
+  CHECK(same);
+  CHECK(hits > calls / 4 && misses > calls / 10 && band > 1000 && unl > 1000 && kink > 1000 && deep > 1000 &&
+        beyond > 1000);
+  printf("contact: %d steps (cell kept %d, formed %d; band %d, unloading %d, kink %d, deep %d, beyond %d; %d set-ups), "
+         "the same bits as dc_gwa_table_step_radius: %s\n",
+         calls, hits, misses, band, unl, kink, deep, beyond, reinit, same ? "yes" : "no");
+}
+
 int main(void)
 {
+  test_contact();
   test_memo();
   test_constant();
   test_random_vs_exact();

@@ -267,6 +267,44 @@ void dc_gwa_table_memo_init(dc_gwa_table_memo *m);
 int dc_gwa_table_step_memo(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
                            double delta, double *hist, dc_gwa_table_out *o);
 
+/* What a sphere contact keeps between steps, as plain doubles that map
+   onto history values (dc_gwa_table_contact_history, in this order): what
+   its relative radius R fixes (a sphere pair's R = r_i r_j/(r_i + r_j), a
+   wall's r_i: the same for the contact's life) and the cubic of the last
+   table cell it used. Keyed by R: a caller sets it up by
+   dc_gwa_table_contact_init whenever the stored R differs from the
+   contact's (all zeros, a new contact, differs from every R > 0; a
+   restart keeps it). The material pair is taken to stay the one it was
+   set up with. */
+typedef struct {
+  double R;       /* [m] the radius the rest belongs to (0: none) */
+  double db;      /* |delta_break| of a summit [m] */
+  double eta;     /* ln tau, clamped to the table's range */
+  double cell[5]; /* the last table cell used: which (0: none; else a small
+                     integer naming branch, region and index), then its
+                     cubic in x or u (as the memo's cells) */
+} dc_gwa_table_contact;
+enum { DC_GWA_TABLE_CONTACT_NFIELDS = 8 };
+extern const dc_history_field dc_gwa_table_contact_history[DC_GWA_TABLE_CONTACT_NFIELDS];
+
+/* Set-up of a contact's record for radius R > 0: R, db and eta as
+   dc_gwa_table_radius_init (same errors, *c untouched on error), no cell
+   kept. w = 0: only c->R is set (the rest 0). */
+int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_contact *c);
+
+/* dc_gwa_table_step_radius for a contact whose record c was set up by
+   dc_gwa_table_contact_init (for the contact's R and this pair): the same
+   bits; the cell kept in c is read when the step lands in it (a settled contact)
+   and otherwise replaced by the cell the step formed. */
+int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
+                              dc_gwa_table_out *o);
+
+/* Reach (dc_gwa_table_reach) from a contact's record: the same bits. */
+static inline double dc_gwa_table_contact_reach(const dc_gwa_table_pair *p, const dc_gwa_table_contact *c)
+{
+  return c->db + DC_GWA_TABLE_X_HI * p->sigma;
+}
+
 /* Apart: a contact that has not touched (hist[0] = 0) with the summits
    more than X_CUT sigma apart (h > X_CUT) feels no force and stays
    untouched: the step returns F = kn = 0 and leaves hist as it is. There
