@@ -47,11 +47,23 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 {
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    CohesionModelBase(lmp, hsetup, c), history_offset(-1), ntypes(0)
+    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
       if (k == 0) history_offset = off;
+    }
+    /* what the contact's radius fixes and its last table cell
+       (dc_gwa_table_contact, a struct of doubles read in place): 8 more
+       values, consecutive */
+    static_assert(sizeof(dc_gwa_table_contact) == DC_GWA_TABLE_CONTACT_NFIELDS * sizeof(double),
+                  "dc_gwa_table_contact: plain doubles, one per history value");
+    for (int k = 0; k < DC_GWA_TABLE_CONTACT_NFIELDS; k++) {
+      const int off = hsetup->add_history_value(dc_gwa_table_contact_history[k].name,
+                                                dc_gwa_table_contact_history[k].flips ? "1" : "0");
+      if (k == 0) contact_offset = off;
+      else if (off != contact_offset + k)
+        error->all(FLERR, "Cohesion model gw_adhesion: history values not consecutive");
     }
   }
 
@@ -76,9 +88,6 @@ public:
     double **Y = registry.getMatrixProperty("Yeff", caller)->data;
     ntypes = registry.max_type();
     pairs.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_pair());
-    radii.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_radius());
-    memos.clear();
-    memos.resize((ntypes + 1) * (ntypes + 1));
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
         const double sigma = dc_gw_roughness_combine(s[i], s[j]);
@@ -124,24 +133,32 @@ private:
       return false;
     }
     const double R = sphereEffectiveRadius(sidata);
-    /* the set-up for R, kept per type pair while R repeats */
-    dc_gwa_table_radius &rad = radii[k];
-    if (rad.R != R) {
-      const int st = dc_gwa_table_radius_init(&p, R, &rad);
+    double *h = &sidata.contact_history[history_offset];
+    double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
+    const bool keep = sidata.computeflag && sidata.shearupdate;
+    if (!keep) {   /* a pass that must not change the history */
+      memcpy(scratch, h, sizeof scratch);
+      h = scratch;
+    }
+    /* the set-up for R and the last table cell, kept in the contact's
+       history (R is the contact's for its life; set up again when the
+       stored R differs: a new contact starts at 0) */
+    dc_gwa_table_contact copy;
+    dc_gwa_table_contact *con = reinterpret_cast<dc_gwa_table_contact *>(&sidata.contact_history[contact_offset]);
+    if (!keep) {
+      memcpy(&copy, con, sizeof copy);
+      con = &copy;
+    }
+    if (con->R != R) {
+      const int st = dc_gwa_table_contact_init(&p, R, con);
       if (st != DC_OK) {
         char msg[256];
         snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
         error->one(FLERR, msg);
       }
     }
-    double *h = &sidata.contact_history[history_offset];
-    double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
-    if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
-      memcpy(scratch, h, sizeof scratch);
-      h = scratch;
-    }
     if (h[0] != 0.0) {
-      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum, reach = rad.reach;
+      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum, reach = dc_gwa_table_contact_reach(&p, con);
       if (neighbor->contactDistanceFactor * r0 < r0 + reach) {
         char msg[256];
         snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
@@ -149,10 +166,8 @@ private:
         error->one(FLERR, msg);
       }
     }
-    /* the table's cells at this radius, memoised per type pair */
-    if (!memos[k]) memos[k].reset(new dc_gwa_table_memo());
     dc_gwa_table_out o;
-    const int st = dc_gwa_table_step_memo(&p, &rad, memos[k].get(), delta, h, &o);
+    const int st = dc_gwa_table_step_contact(&p, con, delta, h, &o);
     if (st != DC_OK) {
       char msg[256];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
@@ -167,10 +182,8 @@ private:
     return true;
   }
 
-  int history_offset, ntypes;
+  int history_offset, contact_offset, ntypes;
   std::vector<dc_gwa_table_pair> pairs;
-  std::vector<dc_gwa_table_radius> radii;
-  std::vector<std::unique_ptr<dc_gwa_table_memo> > memos;   /* allocated on a pair's first step */
 };
 
 }
