@@ -540,47 +540,6 @@ static void bench(void)
          t_a, eta_a, t_b, eta_b, t_tab, t_el, t_ex, s);
 }
 
-/* dc_gwa_table_step_memo: the bits of dc_gwa_table_step_radius along
-   random paths (both branches, the blend, the deep and beyond regions,
-   the kink term) while the radius changes under one memo (renewed at each
-   new eta) or stays, from a zero-initialised memo and from
-   dc_gwa_table_memo_init, and across a wrap of the generations */
-static void test_memo(void)
-{
-  static dc_gwa_table_memo m0, m1;   /* zero-initialised */
-  dc_gwa_table_memo_init(&m1);
-  const double E = 2.7e6, sigma = 2.1e-5;
-  const double ws[] = {0.05, 5e-4, 50.0};
-  const double Rs[] = {7.5e-4, 1.5e-3, 3e-5, 7.5e-4};
-  unsigned long long x = 2463534242ull;
-  int same = 1, calls = 0;
-  for (int k = 0; k < 3; k++) {
-    dc_gwa_table_pair p;
-    CHECK(dc_gwa_table_pair_init(E, ws[k], sigma, 1.0, &p) == DC_OK);
-    for (int q = 0; q < 4; q++) {
-      if (k == 2 && q == 3) m0.gen = 0xffffffffu;   /* the next renewal wraps */
-      dc_gwa_table_radius r;
-      CHECK(dc_gwa_table_radius_init(&p, Rs[q], &r) == DC_OK);
-      double h0[2] = {0, 0}, h1[2] = {0, 0}, h2[2] = {0, 0};
-      for (int i = 0; i < 20000; i++) {
-        const double u = check_uniform(&x);
-        const double delta = i % 1000 == 999 ? -sigma * 300.0 * u : sigma * (-9.0 + 12.0 * u) - (i % 7 == 0 ? 0.0 : r.db * u);
-        dc_gwa_table_out o0, o1, o2;
-        const int s0 = dc_gwa_table_step_radius(&p, &r, delta, h0, &o0);
-        const int s1 = dc_gwa_table_step_memo(&p, &r, &m0, delta, h1, &o1);
-        const int s2 = dc_gwa_table_step_memo(&p, &r, &m1, delta, h2, &o2);
-        if (!(s0 == s1 && s0 == s2 && memcmp(&o0, &o1, sizeof o0) == 0 && memcmp(&o0, &o2, sizeof o0) == 0 &&
-              memcmp(h0, h1, sizeof h0) == 0 && memcmp(h0, h2, sizeof h0) == 0))
-          same = 0;
-        calls++;
-      }
-    }
-  }
-  CHECK(same);
-  CHECK(m0.gen == 1);   /* wrapped, nodes cleared */
-  printf("memo: %d steps, the same bits as dc_gwa_table_step_radius: %s\n", calls, same ? "yes" : "no");
-}
-
 /* dc_gwa_table_step_contact: the bits of dc_gwa_table_step_radius (and
    the same history) along random contacts, each with its own radius and
    record: settled stretches (small wanders inside one cell: the kept cell
@@ -674,7 +633,6 @@ static void test_contact(void)
 int main(void)
 {
   test_contact();
-  test_memo();
   test_constant();
   test_random_vs_exact();
   test_dense_vs_exact();

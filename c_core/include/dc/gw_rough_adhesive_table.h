@@ -241,32 +241,6 @@ int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double
 int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double delta, double *hist,
                              dc_gwa_table_out *o);
 
-/* The table's cells at one eta, memoised cell by cell: a cell's cubic in x
-   (near) or u (deep) at the eta (from its two nodes on each of two rows:
-   16 products) is formed on its first use and kept while the eta stays the
-   same. A caller keeps one next to each dc_gwa_table_radius it keeps
-   (monodisperse spheres, a sphere on walls: the step then reads one cubic
-   instead of forming it); a new eta (a new radius) invalidates every cell
-   at once. Zero-initialised or set up by dc_gwa_table_memo_init. About
-   24 kB. */
-typedef struct {
-  double c[4];      /* L = c0 + c1 t + c2 t^2 + c3 t^3, t in [0, 1] across the cell */
-  unsigned gen;     /* valid when equal to the memo's gen */
-} dc_gwa_table_cell;
-typedef struct {
-  double eta;       /* the eta the cells belong to */
-  unsigned gen;     /* 0: none valid */
-  dc_gwa_table_cell near[2][DC_GWA_TABLE_NNEAR];
-  dc_gwa_table_cell deep[2][DC_GWA_TABLE_NDEEP - 1];
-} dc_gwa_table_memo;
-
-void dc_gwa_table_memo_init(dc_gwa_table_memo *m);
-
-/* dc_gwa_table_step_radius with the rows memoised in m (any memo: one
-   kept for another radius is renewed first): the same bits. */
-int dc_gwa_table_step_memo(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
-                           double delta, double *hist, dc_gwa_table_out *o);
-
 /* What a sphere contact keeps between steps, as plain doubles that map
    onto history values (dc_gwa_table_contact_history, in this order): what
    its relative radius R fixes (a sphere pair's R = r_i r_j/(r_i + r_j), a
@@ -282,7 +256,8 @@ typedef struct {
   double eta;     /* ln tau, clamped to the table's range */
   double cell[5]; /* the last table cell used: which (0: none; else a small
                      integer naming branch, region and index), then its
-                     cubic in x or u (as the memo's cells) */
+                     cubic in x or u: L = c0 + c1 t + c2 t^2 +
+                     c3 t^3, t in [0, 1] across the cell */
 } dc_gwa_table_contact;
 enum { DC_GWA_TABLE_CONTACT_NFIELDS = 8 };
 extern const dc_history_field dc_gwa_table_contact_history[DC_GWA_TABLE_CONTACT_NFIELDS];
