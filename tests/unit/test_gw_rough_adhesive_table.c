@@ -500,6 +500,31 @@ static double bench_steps(double E, double w, double sigma, double R, double *et
   return (now() - t0) / N * 1e9;
 }
 
+/* ns per step of a settled contact (the overlap wandering by 1e-4 sigma
+   about 0.5 sigma after one press to 1 sigma: the unloading branch, one
+   cell) with the radius set up once (contact 0) or with the contact's
+   record (contact 1: the cell kept) */
+static double bench_settled(double E, double w, double sigma, double R, int contact, double *sum)
+{
+  dc_gwa_table_pair p;
+  dc_gwa_table_pair_init(E, w, sigma, 100.0, &p);
+  dc_gwa_table_radius r;
+  dc_gwa_table_radius_init(&p, R, &r);
+  dc_gwa_table_contact c;
+  dc_gwa_table_contact_init(&p, R, &c);
+  const int N = 400000;
+  double hist[2] = {1.0, sigma};
+  dc_gwa_table_out o;
+  const double t0 = now();
+  for (int i = 0; i < N; i++) {
+    const double d = sigma * (0.5 + 1e-4 * (int)((7919LL * i) % 1000) / 1000.0);
+    if (contact) dc_gwa_table_step_contact(&p, &c, d, hist, &o);
+    else dc_gwa_table_step_radius(&p, &r, d, hist, &o);
+    *sum += o.F;
+  }
+  return (now() - t0) / N * 1e9;
+}
+
 static void bench(void)
 {
   const double R = 1e-3, sigma = 1e-7, E = 1e9, w = 0.1, n = 100.0;
@@ -535,6 +560,9 @@ static void bench(void)
     s += as.F;
   }
   const double t_ex = (now() - t0) / M * 1e9;
+  const double t_s0 = bench_settled(E, 0.05 * w, sigma, R, 0, &s), t_s1 = bench_settled(E, 0.05 * w, sigma, R, 1, &s);
+  printf("ns per call, a settled contact (eta %.2f): radius kept %.0f, contact's record (cell kept) %.0f\n", eta_a, t_s0,
+         t_s1);
   printf("ns per call: table step with the radius kept %.0f (eta %.2f), %.0f (eta %.2f, kink term); with the radius "
          "set up each call %.0f; elastic gw_rough_elliptic %.0f; exact gw_rough_adhesive %.0f (checksum %g)\n",
          t_a, eta_a, t_b, eta_b, t_tab, t_el, t_ex, s);
