@@ -171,6 +171,16 @@ static void eta_cell(double eta, dc_gwa_table_eta *c)
   c->w[3] = (u3 - u2) * de;
 }
 
+/* A contact's eta cell (dc_gwa_table_step_contact) holds only eta until a
+   step needs the rest (j < 0): a step that reads the cell the contact kept
+   needs none of it. Set up here on first use (the cell is the caller's,
+   not const). */
+static inline const dc_gwa_table_eta *eta_ready(const dc_gwa_table_eta *c)
+{
+  if (c->j < 0) eta_cell(c->eta, (dc_gwa_table_eta *)c);
+  return c;
+}
+
 /* a node pair (rows j and j + 1): L and its x (or u) slope at ue */
 static inline void eta_mix(const dc_gwa_table_eta *c, const double *a, const double *e, double *v, double *d)
 {
@@ -189,35 +199,49 @@ static inline void cell_cubic(double v0, double s0, double v1, double s1, double
   c[3] = s0 + s1 - 2.0 * dv;
 }
 
-/* near cell i (nodes i, i + 1) at c's eta, from the memo m when there is one */
-static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
+/* A contact's cell cache (dc_gwa_table_contact's cell: which, then the
+   cubic): the key
+   of a cell, 1 + its place among the near then deep cells of branch b */
+#define CELL_KEY_NEAR(b, i) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + (i))
+#define CELL_KEY_DEEP(b, k) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + DC_GWA_TABLE_NNEAR + (k))
+
+/* near cell i (nodes i, i + 1) at c's eta, from the contact's cell cache
+   cc when there is one and it holds the cell (else formed there, or in tmp
+   without one) */
+static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, double *cc, double *tmp)
 {
-  dc_gwa_table_cell *e = m ? &m->near[b][i] : NULL;
-  if (e && e->gen == m->gen) return e->c;
+  if (cc) {
+    const double key = CELL_KEY_NEAR(b, i);
+    if (cc[0] == key) return cc + 1;
+    cc[0] = key;
+    tmp = cc + 1;
+    c = eta_ready(c);
+  }
   const double dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
   double v0, d0, v1, d1;
   eta_mix(c, dc_gwa_table_near[b][c->j][i], dc_gwa_table_near[b][c->j + 1][i], &v0, &d0);
   eta_mix(c, dc_gwa_table_near[b][c->j][i + 1], dc_gwa_table_near[b][c->j + 1][i + 1], &v1, &d1);
-  double *out = e ? e->c : tmp;
-  cell_cubic(v0, d0 * dx, v1, d1 * dx, out);
-  if (e) e->gen = m->gen;
-  return out;
+  cell_cubic(v0, d0 * dx, v1, d1 * dx, tmp);
+  return tmp;
 }
 
 /* deep cell k (row j's nodes k, k + 1; row j + 1's three places shallower) */
-static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *tmp)
+static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, double *cc, double *tmp)
 {
-  dc_gwa_table_cell *e = m ? &m->deep[b][k] : NULL;
-  if (e && e->gen == m->gen) return e->c;
+  if (cc) {
+    const double key = CELL_KEY_DEEP(b, k);
+    if (cc[0] == key) return cc + 1;
+    cc[0] = key;
+    tmp = cc + 1;
+    c = eta_ready(c);
+  }
   const double du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
   const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
   double v0, d0, v1, d1;
   eta_mix(c, dc_gwa_table_deep[b][c->j][k], dc_gwa_table_deep[b][c->j + 1][k - sh], &v0, &d0);
   eta_mix(c, dc_gwa_table_deep[b][c->j][k + 1], dc_gwa_table_deep[b][c->j + 1][k + 1 - sh], &v1, &d1);
-  double *out = e ? e->c : tmp;
-  cell_cubic(v0, d0 * du, v1, d1 * du, out);
-  if (e) e->gen = m->gen;
-  return out;
+  cell_cubic(v0, d0 * du, v1, d1 * du, tmp);
+  return tmp;
 }
 
 /* the cubic of a cell at t: value and d/dt */
@@ -228,42 +252,46 @@ static ALWAYS_INLINE void cubic_eval(const double *c, double t, double *v, doubl
 }
 
 /* near region: L and dL/dx at x in [X_LO, X_HI] */
-static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
+static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c, double *cc,
+                                       double *L, double *Lx)
 {
   const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
   int i = (int)cx;
   if (i < 0) i = 0;
   if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
   double tmp[4], Lc;
-  cubic_eval(near_cell(b, i, c, m, tmp), cx - i, L, &Lc);
+  cubic_eval(near_cell(b, i, c, cc, tmp), cx - i, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
 }
 
 /* deep region: bicubic in (u, eta), u = ln(-x) + eta, whose nodes on row
    j + 1 are those of row j three places shallower; x < 0 */
-static void deep_interp(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *mm, double *L, double *Lx)
+static void deep_interp(int b, double x, const dc_gwa_table_eta *c, double *cc, double *L,
+                        double *Lx)
 {
   const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT;
   const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
+  if (cc) c = eta_ready(c);
   const double cu = DC_GWA_TABLE_U_PER_UNIT * (log(x / DC_GWA_TABLE_X_B) + c->ue * de) - DC_GWA_TABLE_K_MIN;
   int m = (int)cu;
   if (m < sh) m = sh;
   if (m > DC_GWA_TABLE_NDEEP - 2) m = DC_GWA_TABLE_NDEEP - 2;
   double tmp[4], Lc;
-  cubic_eval(deep_cell(b, m, c, mm, tmp), cu - m, L, &Lc);
+  cubic_eval(deep_cell(b, m, c, cc, tmp), cu - m, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_U_PER_UNIT / x;
 }
 
 /* L = ln(-T) and dL/dx on the table's x range */
-static inline void table_L(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *L, double *Lx)
+static inline void table_L(int b, double x, const dc_gwa_table_eta *c, double *cc, double *L,
+                           double *Lx)
 {
-  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, c, m, L, Lx); return; }
-  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, c, m, L, Lx); return; }
+  if (x >= DC_GWA_TABLE_BLEND_HI) { near_interp(b, x, c, cc, L, Lx); return; }
+  if (x <= DC_GWA_TABLE_BLEND_LO) { deep_interp(b, x, c, cc, L, Lx); return; }
   double Ln, Lnx, Ld, Ldx, dw;
   const double bl = DC_GWA_TABLE_BLEND_HI - DC_GWA_TABLE_BLEND_LO;
   const double w = step_down((x - DC_GWA_TABLE_BLEND_LO) / bl, &dw);   /* weight of deep */
-  near_interp(b, x, c, m, &Ln, &Lnx);
-  deep_interp(b, x, c, m, &Ld, &Ldx);
+  near_interp(b, x, c, cc, &Ln, &Lnx);
+  deep_interp(b, x, c, cc, &Ld, &Ldx);
   *L = Ln + w * (Ld - Ln);
   *Lx = Lnx + w * (Ldx - Lnx) + dw / bl * (Ld - Ln);
 }
@@ -307,12 +335,13 @@ static void summit_g(double d, double *g, double *gd)
 }
 
 /* G and dG/dx beyond the table (x > X_HI, x < x_end), unchecked */
-static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
+static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *cc, double *G,
+                           double *Gx)
 {
   double L, Lx;
   if (x > DC_GWA_TABLE_X_HI) {
     /* L continued linearly (C1); the kink term vanishes here */
-    near_interp(b, DC_GWA_TABLE_X_HI, c, m, &L, &Lx);
+    near_interp(b, DC_GWA_TABLE_X_HI, c, cc, &L, &Lx);
     *G = -exp(L + Lx * (x - DC_GWA_TABLE_X_HI));
     *Gx = *G * Lx;
     return;
@@ -321,7 +350,7 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, dc_gwa_ta
   const double x_end = dc_gwa_table_x_deep(DC_GWA_TABLE_K_END);
   const double tau = exp(c->eta), shift = b == DC_GW_UNLOADING ? DC_GWA_UB : 0.0;
   double g, gd, g0, gd0, C = 0.0, Cx;
-  deep_interp(b, x_end, c, m, &L, &Lx);
+  deep_interp(b, x_end, c, cc, &L, &Lx);
   if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x_end, c->eta, &C, &Cx);
   const double d = -tau * x + shift;
   if (!(d <= DBL_MAX)) { *G = -M_PI / 8.0; *Gx = 0.0; return; }   /* beyond the doubles: the limit g = -pi/8 */
@@ -333,14 +362,15 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, dc_gwa_ta
 }
 
 /* G and dG/dx, unchecked, in the eta cell c */
-static void reduced_any(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G, double *Gx)
+static void reduced_any(int b, double x, const dc_gwa_table_eta *c, double *cc, double *G,
+                        double *Gx)
 {
   if (x > DC_GWA_TABLE_X_HI || x < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) {
-    reduced_beyond(b, x, c, m, G, Gx);
+    reduced_beyond(b, x, c, cc, G, Gx);
     return;
   }
   double L, Lx;
-  table_L(b, x, c, m, &L, &Lx);
+  table_L(b, x, c, cc, &L, &Lx);
   *G = -exp_table(L);
   *Gx = *G * Lx;
   if (b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI) {
@@ -353,18 +383,18 @@ static void reduced_any(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table
 
 /* reduced_any with the common case inline: the near region above the
    blend, without the kink term (the same operations, the same bits) */
-static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, dc_gwa_table_memo *m, double *G,
-                                  double *Gx)
+static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, double *cc,
+                                  double *G, double *Gx)
 {
   if (x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
       !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
     double L, Lx;
-    near_interp(b, x, c, m, &L, &Lx);
+    near_interp(b, x, c, cc, &L, &Lx);
     *G = -exp_table(L);
     *Gx = *G * Lx;
     return;
   }
-  reduced_any(b, x, c, m, G, Gx);
+  reduced_any(b, x, c, cc, G, Gx);
 }
 
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
@@ -399,8 +429,8 @@ int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_
 }
 
 /* branch force at overlap delta, unchecked inputs; 0 on success */
-static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
-                               int b, double delta, double *F, double *kn)
+static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double *cc, int b,
+                                      double delta, double *F, double *kn)
 {
   double x = -delta * p->inv_sigma;   /* h */
   if (b == DC_GW_UNLOADING) {
@@ -408,7 +438,7 @@ static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_t
     if (isnan(x)) x = -(delta + r->D * p->sigma) * p->inv_sigma;   /* h and D both overflowed: summed first */
   }
   double G, Gx;
-  reduced(b, x, &r->cell, m, &G, &Gx);
+  reduced(b, x, &r->cell, cc, &G, &Gx);
   if (r->ell.on) dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, &G, &Gx);
   *F = r->Fs * G;
   *kn = -r->Fs * Gx * p->inv_sigma;
@@ -498,9 +528,10 @@ static void band_weight(double h, double hmin, double D, double xi, double sigma
   *dwdd = d;
 }
 
-/* the step, with the rows memoised in m or (m NULL) mixed at each call */
-static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m, double delta,
-                       double *hist, dc_gwa_table_out *o)
+/* the step, with the last cell kept in the contact's cache cc, or (cc
+   NULL) every cell formed at each call */
+static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double *cc, double delta,
+                              double *hist, dc_gwa_table_out *o)
 {
   if (!(isfinite(delta) && isfinite(hist[0]) && isfinite(hist[1]))) return DC_EDOM;
   if (p->w == 0.0 || dc_gwa_table_apart(p, delta, hist)) { o->F = 0.0; o->kn = 0.0; o->weight = 0.0; return DC_OK; }
@@ -511,15 +542,15 @@ static ALWAYS_INLINE int step(const dc_gwa_table_pair *p, const dc_gwa_table_rad
   const double xi = (dmax - delta) / db;
   double F, kn, wgt;
   if (!(xi > 0.0)) {
-    if (branch_force(p, r, m, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, cc, DC_GW_LOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 0.0;
   } else if (xi >= 1.0) {
-    if (branch_force(p, r, m, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, cc, DC_GW_UNLOADING, delta, &F, &kn) != DC_OK) return DC_ERANGE;
     wgt = 1.0;
   } else {
     double FL, kL, FU, kU;
-    if (branch_force(p, r, m, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
-    if (branch_force(p, r, m, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, cc, DC_GW_LOADING, delta, &FL, &kL) != DC_OK) return DC_ERANGE;
+    if (branch_force(p, r, cc, DC_GW_UNLOADING, delta, &FU, &kU) != DC_OK) return DC_ERANGE;
     double dw;   /* dw/d delta */
     band_weight(-delta * p->inv_sigma, -dmax * p->inv_sigma, r->D, xi, p->sigma, db, &wgt, &dw);
     F = FL + wgt * (FU - FL);
@@ -540,25 +571,41 @@ int dc_gwa_table_step_radius(const dc_gwa_table_pair *p, const dc_gwa_table_radi
   return step(p, r, NULL, delta, hist, o);
 }
 
-void dc_gwa_table_memo_init(dc_gwa_table_memo *m)
+const dc_history_field dc_gwa_table_contact_history[DC_GWA_TABLE_CONTACT_NFIELDS] = {
+  {"gwa_R", 0}, {"gwa_db", 0}, {"gwa_eta", 0}, {"gwa_cell", 0},
+  {"gwa_cell_c0", 0}, {"gwa_cell_c1", 0}, {"gwa_cell_c2", 0}, {"gwa_cell_c3", 0},
+};
+
+int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_contact *c)
 {
-  memset(m, 0, sizeof *m);
-  m->eta = NAN;
+  dc_gwa_table_radius r;
+  const int st = dc_gwa_table_radius_init(p, R, &r);
+  if (st != DC_OK) return st;
+  dc_gwa_table_contact q = {0};
+  q.R = r.R;
+  q.db = r.db;
+  q.eta = r.cell.eta;
+  *c = q;
+  return DC_OK;
 }
 
-int dc_gwa_table_step_memo(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, dc_gwa_table_memo *m,
-                           double delta, double *hist, dc_gwa_table_out *o)
+int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
+                              dc_gwa_table_out *o)
 {
-  if (!(m->eta == r->cell.eta) || m->gen == 0) {
-    /* a new eta cell (or a memo never used): every node stale */
-    if (++m->gen == 0) {   /* the generations wrapped: clear them */
-      memset(m->near, 0, sizeof m->near);
-      memset(m->deep, 0, sizeof m->deep);
-      m->gen = 1;
-    }
-    m->eta = r->cell.eta;
-  }
-  return step(p, r, m, delta, hist, o);
+  /* the radius set-up from the record: the same operations as
+     dc_gwa_table_radius_init without the cube root and the logarithm; the
+     eta cell is set up from the stored eta (clamped: clamping again
+     changes nothing) only if the step forms a cell (eta_ready) */
+  dc_gwa_table_radius r;
+  r.R = c->R;
+  r.Fs = p->F_coef * c->R;
+  r.db = c->db;
+  r.D = c->db * p->inv_sigma;
+  r.reach = 0.0;   /* not read by the step */
+  r.cell.eta = c->eta;
+  r.cell.j = -1;
+  r.ell.on = 0;   /* circular summits */
+  return step(p, &r, c->cell, delta, hist, o);
 }
 
 int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)

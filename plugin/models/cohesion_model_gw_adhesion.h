@@ -27,7 +27,6 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 #include <vector>
 #include "atom.h"
 #include "cohesion_model_base.h"
@@ -54,15 +53,33 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 {
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    CohesionModelBase(lmp, hsetup, c), history_offset(-1), ntypes(0), maxRadiusFactor(100.0), warnedRatio(false)
+    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), maxRadiusFactor(100.0),
+    warnedRatio(false)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
       if (k == 0) history_offset = off;
     }
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
-    gap.addHistory(lmp, hsetup);
+    /* superquadrics: the set-up depends on both relative radii, which move
+       with the contact point; no record, the gap's warm start instead */
+    if (atom->superquadric_flag) {
+      gap.addHistory(lmp, hsetup);
+      return;
+    }
 #endif
+    /* what the contact's radius fixes and its last table cell
+       (dc_gwa_table_contact, a struct of doubles read in place): 8 more
+       values, consecutive */
+    static_assert(sizeof(dc_gwa_table_contact) == DC_GWA_TABLE_CONTACT_NFIELDS * sizeof(double),
+                  "dc_gwa_table_contact: plain doubles, one per history value");
+    for (int k = 0; k < DC_GWA_TABLE_CONTACT_NFIELDS; k++) {
+      const int off = hsetup->add_history_value(dc_gwa_table_contact_history[k].name,
+                                                dc_gwa_table_contact_history[k].flips ? "1" : "0");
+      if (k == 0) contact_offset = off;
+      else if (off != contact_offset + k)
+        error->all(FLERR, "Cohesion model gw_adhesion: history values not consecutive");
+    }
   }
 
   /* the normal model's setting (the same value) */
@@ -91,9 +108,6 @@ public:
     double **Y = registry.getMatrixProperty("Yeff", caller)->data;
     ntypes = registry.max_type();
     pairs.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_pair());
-    radii.assign((ntypes + 1) * (ntypes + 1), dc_gwa_table_radius());
-    memos.clear();
-    memos.resize((ntypes + 1) * (ntypes + 1));
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++) {
         const double sigma = dc_gw_roughness_combine(s[i], s[j]);
@@ -112,7 +126,7 @@ public:
   void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
-    if (sidata.is_non_spherical && atom->superquadric_flag) {
+    if (atom->superquadric_flag) {
       adhesionSuperquadric(sidata, sidata.deltan, i_forces, j_forces);
       return;
     }
@@ -162,24 +176,30 @@ private:
     double R_major, R_minor;
     curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_adhesion");
     dc_gwa_table_radius rad;
-    const int st = dc_gwa_table_radius_init_elliptic(&p, R_major, R_minor, &rad);
-    if (st != DC_OK) {
+    const int si = dc_gwa_table_radius_init_elliptic(&p, R_major, R_minor, &rad);
+    if (si != DC_OK) {
       char msg[256];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: relative radii %g, %g: %s", R_major, R_minor,
-               dc_status_str(st));
+               dc_status_str(si));
       error->one(FLERR, msg);
     }
     if (!warnedRatio && R_minor < DC_GWAE_RHO_MIN * R_major) {
       warnedRatio = true;
       char msg[320];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: atoms %d and %d touch with relative radii %g and %g, a "
-               "ratio below %g: the elliptic summits are taken at that ratio, whose adhesive force can be "
-               "several times smaller (a smaller maxRadiusFactor keeps flat faces in range); warned once",
+               "ratio below %g: the elliptic summits are taken at that ratio, which underestimates the adhesive "
+               "force (1.8 times at a ratio of 1e-4; a smaller maxRadiusFactor keeps flat faces in range); "
+               "warned once",
                (int)atom->tag[sidata.i], sidata.is_wall ? 0 : (int)atom->tag[sidata.j], R_major, R_minor,
                DC_GWAE_RHO_MIN);
       error->warning(FLERR, msg);
     }
-    return stepAndApply(sidata, p, rad, NULL, delta, i_forces, j_forces);
+    double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
+    double *h = history(sidata, scratch);
+    if (h[0] != 0.0) checkReach(sidata, rad.reach);
+    dc_gwa_table_out o;
+    const int st = dc_gwa_table_step_radius(&p, &rad, delta, h, &o);
+    return finish(sidata, st, delta, R_major, h, o, i_forces, j_forces);
   }
 #endif
 
@@ -194,48 +214,60 @@ private:
       return false;
     }
     const double R = sphereEffectiveRadius(sidata);
-    /* the set-up for R, kept per type pair while R repeats */
-    dc_gwa_table_radius &rad = radii[k];
-    if (rad.R != R) {
-      const int st = dc_gwa_table_radius_init(&p, R, &rad);
+    double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
+    double *h = history(sidata, scratch);
+    /* the set-up for R and the last table cell, kept in the contact's
+       history (R is the contact's for its life; set up again when the
+       stored R differs: a new contact starts at 0) */
+    dc_gwa_table_contact copy;
+    dc_gwa_table_contact *con = reinterpret_cast<dc_gwa_table_contact *>(&sidata.contact_history[contact_offset]);
+    if (h == scratch) {
+      memcpy(&copy, con, sizeof copy);
+      con = &copy;
+    }
+    if (con->R != R) {
+      const int st = dc_gwa_table_contact_init(&p, R, con);
       if (st != DC_OK) {
         char msg[256];
         snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
         error->one(FLERR, msg);
       }
     }
-    /* the table's cells at this radius, memoised per type pair */
-    if (!memos[k]) memos[k].reset(new dc_gwa_table_memo());
-    return stepAndApply(sidata, p, rad, memos[k].get(), delta, i_forces, j_forces);
+    if (h[0] != 0.0) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
+    dc_gwa_table_out o;
+    const int st = dc_gwa_table_step_contact(&p, con, delta, h, &o);
+    return finish(sidata, st, delta, R, h, o, i_forces, j_forces);
   }
 
-  /* One step of the law on the contact's history (a scratch copy on a pass
-     that must not change it; memo NULL: none), the force applied; false
-     when none acts. */
-  bool stepAndApply(SurfacesIntersectData &sidata, const dc_gwa_table_pair &p, const dc_gwa_table_radius &rad,
-                    dc_gwa_table_memo *memo, double delta, ForceData &i_forces, ForceData &j_forces)
+  /* The contact's history, or (a pass that must not change it) a copy in scratch. */
+  double *history(SurfacesIntersectData &sidata, double *scratch)
   {
     double *h = &sidata.contact_history[history_offset];
-    double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
-    if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
-      memcpy(scratch, h, sizeof scratch);
-      h = scratch;
+    if (sidata.computeflag && sidata.shearupdate) return h;
+    memcpy(scratch, h, DC_GWA_TABLE_HISTORY_NFIELDS * sizeof(double));
+    return scratch;
+  }
+
+  /* Stops the run when attached summits could pull beyond the neighbour list. */
+  void checkReach(const SurfacesIntersectData &sidata, double reach)
+  {
+    const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
+    if (neighbor->contactDistanceFactor * r0 < r0 + reach) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
+               "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
+      error->one(FLERR, msg);
     }
-    if (h[0] != 0.0) {
-      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum, reach = rad.reach;
-      if (neighbor->contactDistanceFactor * r0 < r0 + reach) {
-        char msg[256];
-        snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
-                 "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
-        error->one(FLERR, msg);
-      }
-    }
-    dc_gwa_table_out o;
-    const int st = memo ? dc_gwa_table_step_memo(&p, &rad, memo, delta, h, &o)
-                        : dc_gwa_table_step_radius(&p, &rad, delta, h, &o);
+  }
+
+  /* After the step (status st, history h, output o): the contact flag and
+     the force; false when none acts. */
+  bool finish(SurfacesIntersectData &sidata, int st, double delta, double R, const double *h,
+              const dc_gwa_table_out &o, ForceData &i_forces, ForceData &j_forces)
+  {
     if (st != DC_OK) {
       char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, rad.R, dc_status_str(st));
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
       error->one(FLERR, msg);
     }
     if (sidata.contact_flags) {
@@ -247,7 +279,7 @@ private:
     return true;
   }
 
-  int history_offset, ntypes;
+  int history_offset, contact_offset, ntypes;
   double maxRadiusFactor;
   bool warnedRatio;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
@@ -255,8 +287,6 @@ private:
   SuperquadricGap gap;
 #endif
   std::vector<dc_gwa_table_pair> pairs;
-  std::vector<dc_gwa_table_radius> radii;
-  std::vector<std::unique_ptr<dc_gwa_table_memo> > memos;   /* allocated on a pair's first step */
 };
 
 }

@@ -3116,14 +3116,23 @@ static void fuzz_gwa_table(void)
     SENTINEL(o2);
     const int sr = dc_gwa_table_radius_init(p, R, &rr);
     const int st2 = sr == DC_OK ? dc_gwa_table_step_radius(p, &rr, d, hist2, &o2) : sr;
-    /* and with the cells memoised (one memo across every pair and radius) */
-    static dc_gwa_table_memo memo;
+    /* and with the contact's record (one per contact: set up again when
+       the contact's R or pair changes, its last cell kept across steps) */
+    static dc_gwa_table_contact con;
+    static const dc_gwa_table_pair *con_p;
     dc_gwa_table_out o3;
     double hist3[2] = {h0[0], h0[1]};
     SENTINEL(o3);
-    const int st3 = sr == DC_OK ? dc_gwa_table_step_memo(p, &rr, &memo, d, hist3, &o3) : sr;
+    int st3 = sr;
+    if (sr == DC_OK && (con.R != R || con_p != p)) {
+      const int si = dc_gwa_table_contact_init(p, R, &con);
+      FZ_EXPECT(f, si == DC_OK && con.cell[0] == 0.0, "dc_gwa_table_contact_init fails where _radius_init does not",
+                GWA_FMT ": status %d", GWA_ARGS(p, R), si);
+      con_p = p;
+    }
+    if (sr == DC_OK) st3 = dc_gwa_table_step_contact(p, &con, d, hist3, &o3);
     FZ_EXPECT(f, st3 == st2 && !memcmp(&o3, &o2, sizeof o2) && !memcmp(hist3, hist2, sizeof hist2),
-              "dc_gwa_table_step_memo differs from dc_gwa_table_step_radius",
+              "dc_gwa_table_step_contact differs from dc_gwa_table_step_radius",
               GWA_FMT " delta %.17g: status %d vs %d", GWA_ARGS(p, R), d, st3, st2);
     const int st = dc_gwa_table_step(p, R, d, hist, &o);
     FZ_CHECK(f, st, bad, dom, UNTOUCHED(o) && !memcmp(hist, h0, sizeof hist),

@@ -500,6 +500,31 @@ static double bench_steps(double E, double w, double sigma, double R, double *et
   return (now() - t0) / N * 1e9;
 }
 
+/* ns per step of a settled contact (the overlap wandering by 1e-4 sigma
+   about 0.5 sigma after one press to 1 sigma: the unloading branch, one
+   cell) with the radius set up once (contact 0) or with the contact's
+   record (contact 1: the cell kept) */
+static double bench_settled(double E, double w, double sigma, double R, int contact, double *sum)
+{
+  dc_gwa_table_pair p;
+  dc_gwa_table_pair_init(E, w, sigma, 100.0, &p);
+  dc_gwa_table_radius r;
+  dc_gwa_table_radius_init(&p, R, &r);
+  dc_gwa_table_contact c;
+  dc_gwa_table_contact_init(&p, R, &c);
+  const int N = 400000;
+  double hist[2] = {1.0, sigma};
+  dc_gwa_table_out o;
+  const double t0 = now();
+  for (int i = 0; i < N; i++) {
+    const double d = sigma * (0.5 + 1e-4 * (int)((7919LL * i) % 1000) / 1000.0);
+    if (contact) dc_gwa_table_step_contact(&p, &c, d, hist, &o);
+    else dc_gwa_table_step_radius(&p, &r, d, hist, &o);
+    *sum += o.F;
+  }
+  return (now() - t0) / N * 1e9;
+}
+
 static void bench(void)
 {
   const double R = 1e-3, sigma = 1e-7, E = 1e9, w = 0.1, n = 100.0;
@@ -535,55 +560,107 @@ static void bench(void)
     s += as.F;
   }
   const double t_ex = (now() - t0) / M * 1e9;
+  const double t_s0 = bench_settled(E, 0.05 * w, sigma, R, 0, &s), t_s1 = bench_settled(E, 0.05 * w, sigma, R, 1, &s);
+  printf("ns per call, a settled contact (eta %.2f): radius kept %.0f, contact's record (cell kept) %.0f\n", eta_a, t_s0,
+         t_s1);
   printf("ns per call: table step with the radius kept %.0f (eta %.2f), %.0f (eta %.2f, kink term); with the radius "
          "set up each call %.0f; elastic gw_rough_elliptic %.0f; exact gw_rough_adhesive %.0f (checksum %g)\n",
          t_a, eta_a, t_b, eta_b, t_tab, t_el, t_ex, s);
 }
 
-/* dc_gwa_table_step_memo: the bits of dc_gwa_table_step_radius along
-   random paths (both branches, the blend, the deep and beyond regions,
-   the kink term) while the radius changes under one memo (renewed at each
-   new eta) or stays, from a zero-initialised memo and from
-   dc_gwa_table_memo_init, and across a wrap of the generations */
-static void test_memo(void)
+/* dc_gwa_table_step_contact: the bits of dc_gwa_table_step_radius (and
+   the same history) along random contacts, each with its own radius and
+   record: settled stretches (small wanders inside one cell: the kept cell
+   read), walks across cells and jumps (a new cell formed: the kept one
+   replaced), both branches and the band, the blend, the deep region and
+   beyond it, the kink term (small tau), tau clamped at both ends, w = 0;
+   a record carried over as a restart would (copied) and re-set-up when R
+   changes; every path counted so that none goes untested. */
+static void test_contact(void)
 {
-  static dc_gwa_table_memo m0, m1;   /* zero-initialised */
-  dc_gwa_table_memo_init(&m1);
-  const double E = 2.7e6, sigma = 2.1e-5;
-  const double ws[] = {0.05, 5e-4, 50.0};
-  const double Rs[] = {7.5e-4, 1.5e-3, 3e-5, 7.5e-4};
-  unsigned long long x = 2463534242ull;
-  int same = 1, calls = 0;
-  for (int k = 0; k < 3; k++) {
+  const double E = 2.7e6;
+  const double ws[] = {0.05, 5e-4, 50.0, 0.0, 5e-9, 5e5};
+  unsigned long long x = 88172645463325252ull;
+  int same = 1, calls = 0, hits = 0, misses = 0, band = 0, unl = 0, kink = 0, deep = 0, beyond = 0, reinit = 0;
+  for (int k = 0; k < 6; k++) {
+    const double sigma = k == 4 ? 2.1e-8 : 2.1e-5;
     dc_gwa_table_pair p;
-    CHECK(dc_gwa_table_pair_init(E, ws[k], sigma, 1.0, &p) == DC_OK);
-    for (int q = 0; q < 4; q++) {
-      if (k == 2 && q == 3) m0.gen = 0xffffffffu;   /* the next renewal wraps */
+    CHECK(dc_gwa_table_pair_init(E, ws[k], sigma, k == 2 ? 7.0 : 1.0, &p) == DC_OK);
+    for (int q = 0; q < 40; q++) {
+      double R = 1e-5 * exp(6.0 * check_uniform(&x));   /* 1e-5 to 4e-3 m */
       dc_gwa_table_radius r;
-      CHECK(dc_gwa_table_radius_init(&p, Rs[q], &r) == DC_OK);
-      double h0[2] = {0, 0}, h1[2] = {0, 0}, h2[2] = {0, 0};
-      for (int i = 0; i < 20000; i++) {
-        const double u = check_uniform(&x);
-        const double delta = i % 1000 == 999 ? -sigma * 300.0 * u : sigma * (-9.0 + 12.0 * u) - (i % 7 == 0 ? 0.0 : r.db * u);
-        dc_gwa_table_out o0, o1, o2;
+      CHECK(dc_gwa_table_radius_init(&p, R, &r) == DC_OK);
+      dc_gwa_table_contact c;
+      memset(&c, 0, sizeof c);   /* a new contact: history values start at 0 */
+      double h0[2] = {0, 0}, h1[2] = {0, 0};
+      const double scale = sigma + r.db;
+      double delta = -scale * 3.0 * check_uniform(&x);
+      for (int i = 0; i < 3000; i++) {
+        const double u = check_uniform(&x), v = check_uniform(&x);
+        if (u < 0.02) delta = -scale * 300.0 * v;                  /* deep apart, beyond */
+        else if (u < 0.04) delta = scale * 300.0 * v;              /* pressed deep, and beyond x_end */
+        else if (u < 0.10) delta = scale * (-9.0 + 12.0 * v);      /* a jump */
+        else if (u < 0.40) delta += scale * 0.3 * (v - 0.5);       /* a walk */
+        else delta += scale * 1e-4 * (v - 0.5);                    /* settled */
+        if (i == 1500) {
+          /* a restart: the record travels as history values */
+          double buf[DC_GWA_TABLE_CONTACT_NFIELDS];
+          memcpy(buf, &c, sizeof buf);
+          memcpy(&c, buf, sizeof c);
+        }
+        if (i == 2000 && q % 4 == 0) {   /* the contact's radius changes (another contact in its slot) */
+          R *= 1.0 + 1e-15 * (1 + q);
+          CHECK(dc_gwa_table_radius_init(&p, R, &r) == DC_OK);
+        }
+        if (c.R != R) {
+          CHECK(dc_gwa_table_contact_init(&p, R, &c) == DC_OK);
+          CHECK(c.cell[0] == 0.0);
+          reinit++;
+        }
+        const double key = c.cell[0];
+        dc_gwa_table_out o0, o1;
+        memset(&o0, 0, sizeof o0);
+        memset(&o1, 0, sizeof o1);
         const int s0 = dc_gwa_table_step_radius(&p, &r, delta, h0, &o0);
-        const int s1 = dc_gwa_table_step_memo(&p, &r, &m0, delta, h1, &o1);
-        const int s2 = dc_gwa_table_step_memo(&p, &r, &m1, delta, h2, &o2);
-        if (!(s0 == s1 && s0 == s2 && memcmp(&o0, &o1, sizeof o0) == 0 && memcmp(&o0, &o2, sizeof o0) == 0 &&
-              memcmp(h0, h1, sizeof h0) == 0 && memcmp(h0, h2, sizeof h0) == 0))
-          same = 0;
+        const int s1 = dc_gwa_table_step_contact(&p, &c, delta, h1, &o1);
+        if (!(s0 == s1 && memcmp(&o0, &o1, sizeof o0) == 0 && memcmp(h0, h1, sizeof h0) == 0)) same = 0;
+        if (!(dc_gwa_table_contact_reach(&p, &c) == r.reach || p.w == 0.0)) same = 0;
         calls++;
+        if (key != 0.0 && c.cell[0] == key) hits++;
+        else if (c.cell[0] != key) misses++;
+        if (o0.weight > 0.0 && o0.weight < 1.0) band++;
+        if (o0.weight == 1.0) unl++;
+        const double xl = -delta / sigma;
+        if (o0.weight > 0.0 && r.cell.eta < DC_GWA_KINK_K_HI && xl - r.D < DC_GWA_KINK_W_HI) kink++;
+        if (xl < DC_GWA_TABLE_BLEND_HI && xl > dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) deep++;
+        if (xl < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END) || xl - (o0.weight > 0.0 ? r.D : 0.0) > DC_GWA_TABLE_X_HI)
+          beyond++;
       }
     }
   }
+  /* errors: as dc_gwa_table_radius_init, the record untouched */
+  dc_gwa_table_pair p;
+  CHECK(dc_gwa_table_pair_init(E, 0.05, 2.1e-5, 1.0, &p) == DC_OK);
+  dc_gwa_table_contact c, c0;
+  memset(&c, 0x5a, sizeof c);
+  c0 = c;
+  CHECK(dc_gwa_table_contact_init(&p, 0.0, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, -1e-3, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, NAN, &c) == DC_EDOM);
+  CHECK(dc_gwa_table_contact_init(&p, INFINITY, &c) == DC_EDOM);
+  CHECK(memcmp(&c, &c0, sizeof c) == 0);
+  CHECK(sizeof(dc_gwa_table_contact) == DC_GWA_TABLE_CONTACT_NFIELDS * sizeof(double));
   CHECK(same);
-  CHECK(m0.gen == 1);   /* wrapped, nodes cleared */
-  printf("memo: %d steps, the same bits as dc_gwa_table_step_radius: %s\n", calls, same ? "yes" : "no");
+  CHECK(hits > calls / 4 && misses > calls / 10 && band > 1000 && unl > 1000 && kink > 1000 && deep > 1000 &&
+        beyond > 1000);
+  printf("contact: %d steps (cell kept %d, formed %d; band %d, unloading %d, kink %d, deep %d, beyond %d; %d set-ups), "
+         "the same bits as dc_gwa_table_step_radius: %s\n",
+         calls, hits, misses, band, unl, kink, deep, beyond, reinit, same ? "yes" : "no");
 }
 
 int main(void)
 {
-  test_memo();
+  test_contact();
   test_constant();
   test_random_vs_exact();
   test_dense_vs_exact();
