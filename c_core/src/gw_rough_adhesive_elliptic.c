@@ -47,9 +47,8 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
                                       dc_gwa_table_radius *r)
 {
   if (!(R_major >= R_minor && R_minor > 0.0 && R_major <= DBL_MAX)) return DC_EDOM;
-  dc_gwa_table_radius q;
-  const int st = dc_gwa_table_radius_init(p, R_major, &q);
-  if (st != DC_OK) return st;
+  dc_gwa_table_radius q = {0};
+  q.R = R_major;
   if (p->w > 0.0) {
     dc_gwa_table_ell e = {0};
     e.on = 1;
@@ -61,26 +60,29 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
     const int ks = cr_cell(ur * DC_GWAE_SCALE_PER_CELL, DC_GWAE_NR * DC_GWAE_SCALE_PER_CELL, ws);
     for (int n = 0; n < 4; n++)
       for (int c = 0; c < 4; c++) s[c] += ws[n] * dc_gwae_scale[ks + n][c];
-    const double qd = exp(s[0]), qF = exp(s[1]);
     e.ke = s[2];
     e.lr_inf = s[3];
     e.i = cr_cell(ur, DC_GWAE_NR, e.wr);
-    q.Fs *= qF;
-    q.db *= qd;
-    q.D *= qd;
+    /* the circle of R_major's scales (dc_gwa_table_radius_init) times the
+       matched ones': delta_c = dc_coef R^1/3 e^s0, F_s = 8 w n_asp R e^s1 */
+    const double l3 = log(R_major) / 3.0;
+    q.Fs = p->F_coef * R_major * exp(s[1]);
+    q.db = -p->ub * p->dc_coef * exp(l3 + s[0]);
+    q.D = q.db * p->inv_sigma;
     q.reach = q.db + DC_GWA_TABLE_X_HI * p->sigma;
-    dc_gwa_table_eta_cell(p->ln_sigma_dc - log(R_major) / 3.0 - s[0], &q.cell);
+    dc_gwa_table_eta_cell(p->ln_sigma_dc - l3 - s[0], &q.cell);
     const double eta = q.cell.eta, lo = DC_GWA_TABLE_ETA_LO;
     e.j[0] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_NETA_L, e.we[0]);
     e.j[1] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_U, DC_GWAE_NETA_U, e.we[1]);
     q.ell = e;
-    if (!(isfinite(q.Fs) && isfinite(q.db) && isfinite(q.reach))) return DC_ERANGE;
+    if (!(isfinite(q.Fs) && isfinite(q.db) && isfinite(q.reach) && isfinite(eta))) return DC_ERANGE;
   }
   *r = q;
   return DC_OK;
 }
 
-void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, double *G, double *Gx)
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc, double *G,
+                            double *Gx)
 {
   double dxi, xi = dc_gwae_xi(x, &dxi);
   const int deep = xi < DC_GWAE_XI_LO;
@@ -102,21 +104,20 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double lr = wx[0] * a[0] + wx[1] * a[1] + wx[2] * a[2] + wx[3] * a[3];
   double lrx = (dx[0] * a[0] + dx[1] * a[1] + dx[2] * a[2] + dx[3] * a[3]) * DC_GWAE_XI_PER_UNIT * dxi;
   const double r = exp(lr);
-  double C = 0.0, Cx = 0.0;
   if (deep) {
     /* below x_lo the kink-free ratio G_ell/G, at x_lo from the grid, tends
        to r_oo like one summit's d^-3/4 (the kink term's d^-1/2 would
        spoil the smoothed ratio's tail) */
-    double Gl, Gxl;
-    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &C, &Cx);
+    double Gl, Gxl, Cl = 0.0, Cxl;
+    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &Cl, &Cxl);
     dc_gwa_table_reduced(b, dc_gwae_x_lo, eta, &Gl, &Gxl);
-    const double rl = (r * (Gl + C) - e->ke * C) / Gl, ri = exp(e->lr_inf);
+    const double rl = (r * (Gl + Cl) - e->ke * Cl) / Gl, ri = exp(e->lr_inf);
     const double c = (rl - ri) * pow(dc_gwae_x_lo / x, 0.75);
     *Gx = *Gx * (ri + c) - 0.75 * c / x * *G;
     *G *= ri + c;
     return;
   }
-  if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x, eta, &C, &Cx);
+  const double C = kc[0], Cx = kc[1];
   const double T = *G + C, Tx = *Gx + Cx;
   *G = r * T - e->ke * C;
   *Gx = r * (lrx * T + Tx) - e->ke * Cx;

@@ -362,11 +362,15 @@ static void reduced_beyond(int b, double x, const dc_gwa_table_eta *c, double *c
 }
 
 /* G and dG/dx, unchecked, in the eta cell c */
+/* kc (may be NULL): C and dC/dx of dc_gwa_table_kink at (x, c->eta) on
+   unloading, 0 on loading (for the elliptic summits' correction) */
 static void reduced_any(int b, double x, const dc_gwa_table_eta *c, double *cc, double *G,
-                        double *Gx)
+                        double *Gx, double *kc)
 {
+  if (kc) kc[0] = kc[1] = 0.0;
   if (x > DC_GWA_TABLE_X_HI || x < dc_gwa_table_x_deep(DC_GWA_TABLE_K_END)) {
     reduced_beyond(b, x, c, cc, G, Gx);
+    if (kc && b == DC_GW_UNLOADING) dc_gwa_table_kink(x, c->eta, &kc[0], &kc[1]);
     return;
   }
   double L, Lx;
@@ -378,13 +382,14 @@ static void reduced_any(int b, double x, const dc_gwa_table_eta *c, double *cc, 
     dc_gwa_table_kink(x, c->eta, &C, &Cx);
     *G -= C;
     *Gx -= Cx;
+    if (kc) { kc[0] = C; kc[1] = Cx; }
   }
 }
 
 /* reduced_any with the common case inline: the near region above the
    blend, without the kink term (the same operations, the same bits) */
 static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, double *cc,
-                                  double *G, double *Gx)
+                                  double *G, double *Gx, double *kc)
 {
   if (x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
       !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
@@ -392,9 +397,10 @@ static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, do
     near_interp(b, x, c, cc, &L, &Lx);
     *G = -exp_table(L);
     *Gx = *G * Lx;
+    if (kc) kc[0] = kc[1] = 0.0;
     return;
   }
-  reduced_any(b, x, c, cc, G, Gx);
+  reduced_any(b, x, c, cc, G, Gx, kc);
 }
 
 int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dGdx)
@@ -403,7 +409,7 @@ int dc_gwa_table_reduced(int branch, double x, double eta, double *G, double *dG
   dc_gwa_table_eta c;
   eta_cell(eta, &c);
   double g, gx;
-  reduced(branch, x, &c, NULL, &g, &gx);
+  reduced(branch, x, &c, NULL, &g, &gx, NULL);
   if (!(isfinite(g) && isfinite(gx))) return DC_ERANGE;
   *G = g;
   *dGdx = gx;
@@ -438,8 +444,13 @@ static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_t
     if (isnan(x)) x = -(delta + r->D * p->sigma) * p->inv_sigma;   /* h and D both overflowed: summed first */
   }
   double G, Gx;
-  reduced(b, x, &r->cell, cc, &G, &Gx);
-  if (r->ell.on) dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, &G, &Gx);
+  if (r->ell.on) {
+    double kc[2];
+    reduced(b, x, &r->cell, cc, &G, &Gx, kc);
+    dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, kc, &G, &Gx);
+  } else {
+    reduced(b, x, &r->cell, cc, &G, &Gx, NULL);
+  }
   *F = r->Fs * G;
   *kn = -r->Fs * Gx * p->inv_sigma;
   return isfinite(*F) && isfinite(*kn) ? DC_OK : DC_ERANGE;

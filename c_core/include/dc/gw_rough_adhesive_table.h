@@ -240,7 +240,7 @@ typedef struct {
    summits' kink, x ~ -D, at rho < 0.003); dF/d delta 4.1e-4 and 1.3e-3
    (Catmull-Rom slopes; kn is the exact derivative of the interpolated F);
    beyond x_lo 5.8e-5 (below 2e-8 of the whole force); the matched scales
-   within 5e-10 of dc_jkr_geometry. Cost: ~300 ns per set-up and step
+   within 5e-10 of dc_jkr_geometry. Cost: ~205 ns per set-up and step
    (the unit test), against ~30 us for the exact law. */
 #define DC_GWAE_RHO_MIN 1e-3
 #define DC_GWAE_NR 18
@@ -311,8 +311,10 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
                                       dc_gwa_table_radius *r);
 
 /* The correction applied to the circular table's G, dG/dx at (x, eta) on
-   branch b (used by the step; exposed for the generator and tests). */
-void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, double *G, double *Gx);
+   branch b, kc = C and dC/dx of dc_gwa_table_kink there (0 on loading):
+   used by the step. */
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc, double *G,
+                            double *Gx);
 
 /* Per-contact history: gwa_touched, gwa_delta_max (no sign flips). */
 enum { DC_GWA_TABLE_HISTORY_NFIELDS = 2 };
