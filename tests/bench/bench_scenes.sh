@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Whole-run (loop) time of the same scene with stock `hertz` and with
 # `hertz_elliptic`, for spheres and superquadrics, `gw_rough` (with and
-# without cohesion `gw_adhesion`) and `jkr_elliptic` on the sphere packing,
+# without cohesion `gw_adhesion`, also on rough superquadrics) and
+# `jkr_elliptic` on the sphere packing,
 # the superquadric packing on 1 and 2 MPI ranks, a rolling scene with
 # and without `rolling_friction kalker`, and settled beds of spheres and of
 # superquadrics on 1 and 2 ranks. All runs in one invocation; the
@@ -35,6 +36,7 @@ sq="$root/inputs/superquadric_packing/in.superquadric_packing"
 roll="$root/tests/bench/in.rolling_scene"
 ss="$root/tests/bench/in.settled_spheres"
 sqs="$root/tests/bench/in.settled_superquadrics"
+rcs="$root/examples/rough_cohesive_superquadrics/in.rough_cohesive_superquadrics"
 prep=${DC_BENCH_PREP:-$work/prep}
 mkdir -p "$prep"
 # name | deck | model | steps | ranks | extra -var pairs
@@ -50,6 +52,10 @@ configs=(
   # contact distance 1.114 at least), gw_rough gwElliptic on alone and the
   # default gw_rough at that contact distance
   "sra|$sph|gw_rough|10000|1|-var cdf 1.12 -var coh 1"
+  # rough adhesion on superquadrics (the example: 324 blocky particles
+  # settling, elliptic summits), with and without the cohesion model
+  "qra|$rcs|gw_rough|15000|1|-var cohesion 1"
+  "qre|$rcs|gw_rough|15000|1|-var cohesion 0"
   "sre|$sph|gw_rough|10000|1|-var cdf 1.12 -var gwe 1"
   "sr2|$sph|gw_rough|10000|1|-var cdf 1.12"
   # the same on polydisperse spheres (d 2.6-3.4 mm: every contact has its
@@ -159,6 +165,8 @@ row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x 
 row(lambda se2, sj0: "    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
     "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2), "se2", "sj0")
 row(lambda sjp, sh: "2888 spheres: jamari_ep (hardness 1e5 Pa: plastic) %.3f s = %.4f x stock hertz" % (sjp, sjp / sh), "sjp", "sh")
+row(lambda qra, qre: "324 rough superquadrics settling, 15000 steps: cohesion gw_adhesion %.3f s = %.4f x gw_rough "
+    "gwElliptic on alone (%.3f s)" % (qra, qra / qre, qre), "qra", "qre")
 row(lambda qe, q2: "324 superquadrics, hertz_elliptic: 1 rank %.3f s, 2 ranks %.3f s, speed-up %.3f" % (qe, q2, qe / q2), "qe", "q2")
 row(lambda sth, st: "2888 spheres (jittered), hertz: tangential history %.3f s, cmd_tangential %.3f s = %.4f x"
     % (sth, st, st / sth), "sth", "st")
