@@ -205,18 +205,26 @@ static inline void cell_cubic(double v0, double s0, double v1, double s1, double
 #define CELL_KEY_NEAR(b, i) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + (i))
 #define CELL_KEY_DEEP(b, k) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + DC_GWA_TABLE_NNEAR + (k))
 
+/* The contact's cell cache cc (NULL: none) for the cell of this key: its
+   cubic when cc holds that cell; else NULL, with the cell to be formed in
+   cc's slot (*tmp) from the eta cell set up (*c) */
+static ALWAYS_INLINE const double *cell_kept(double *cc, double key, double **tmp, const dc_gwa_table_eta **c)
+{
+  if (!cc) return NULL;
+  if (cc[0] == key) return cc + 1;
+  cc[0] = key;
+  *tmp = cc + 1;
+  *c = eta_ready(*c);
+  return NULL;
+}
+
 /* near cell i (nodes i, i + 1) at c's eta, from the contact's cell cache
    cc when there is one and it holds the cell (else formed there, or in tmp
    without one) */
 static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, double *cc, double *tmp)
 {
-  if (cc) {
-    const double key = CELL_KEY_NEAR(b, i);
-    if (cc[0] == key) return cc + 1;
-    cc[0] = key;
-    tmp = cc + 1;
-    c = eta_ready(c);
-  }
+  const double *kept = cell_kept(cc, CELL_KEY_NEAR(b, i), &tmp, &c);
+  if (kept) return kept;
   const double dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
   double v0, d0, v1, d1;
   eta_mix(c, dc_gwa_table_near[b][c->j][i], dc_gwa_table_near[b][c->j + 1][i], &v0, &d0);
@@ -228,13 +236,8 @@ static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_et
 /* deep cell k (row j's nodes k, k + 1; row j + 1's three places shallower) */
 static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, double *cc, double *tmp)
 {
-  if (cc) {
-    const double key = CELL_KEY_DEEP(b, k);
-    if (cc[0] == key) return cc + 1;
-    cc[0] = key;
-    tmp = cc + 1;
-    c = eta_ready(c);
-  }
+  const double *kept = cell_kept(cc, CELL_KEY_DEEP(b, k), &tmp, &c);
+  if (kept) return kept;
   const double du = 1.0 / DC_GWA_TABLE_U_PER_UNIT;
   const int sh = DC_GWA_TABLE_U_PER_UNIT / DC_GWA_TABLE_ETA_PER_UNIT;
   double v0, d0, v1, d1;
