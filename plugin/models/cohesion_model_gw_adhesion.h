@@ -54,7 +54,7 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), maxRadiusFactor(100.0),
-    warnedRatio(false)
+    warnedRatio(false), warnedMesh(false)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
@@ -127,6 +127,12 @@ public:
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
+      if (sidata.is_wall && sidata.mesh && !warnedMesh) {
+        warnedMesh = true;
+        error->warning(FLERR, "Cohesion model gw_adhesion: superquadrics on a mesh wall: LIGGGHTS measures no gap "
+                       "to a mesh for superquadrics, so their summits pull only while the surfaces touch, not "
+                       "before touch or after they part (primitive walls and pairs have the whole law); warned once");
+      }
       adhesionSuperquadric(sidata, sidata.deltan, i_forces, j_forces);
       return;
     }
@@ -281,7 +287,7 @@ private:
 
   int history_offset, contact_offset, ntypes;
   double maxRadiusFactor;
-  bool warnedRatio;
+  bool warnedRatio, warnedMesh;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
   SuperquadricGap gap;
