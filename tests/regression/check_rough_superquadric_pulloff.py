@@ -18,6 +18,9 @@ ratio 0.29); the overlaps from the prescribed positions.
 - hysteresis: the pull-off force exceeds the largest pull on approach and
   equals the exact unloading branch's minimum within 1e-3;
 - workOfAdhesion 0 equals gw_rough without a cohesion model exactly;
+- a mesh plane instead of the primitive wall: no force apart (LIGGGHTS
+  measures no gap to a mesh for superquadrics), the primitive wall's while
+  the tip overlaps, and a warning;
 - 2 MPI ranks equal 1 rank.
 Usage: check_rough_superquadric_pulloff.py WORKDIR"""
 import math
@@ -54,10 +57,13 @@ def exact(radii, d0, d1, n):
 
 
 runs = {}
+logs = {}
+D = os.path.join(ROOT, "inputs", "rough_superquadric_pulloff")
 for name, variables, ranks in (("adhesive", {}, 1), ("adhesive_np2", {}, 2), ("w0", {"w": 0.0}, 1),
-                               ("none", {"w": 0.0, "coh": "off"}, 1)):
+                               ("none", {"w": 0.0, "coh": "off"}, 1), ("mesh", {"mesh": 1, "dir": D}, 1)):
     d = os.path.join(work, name)
-    run("rough_superquadric_pulloff/in.rough_superquadric_pulloff", d, ranks=ranks, variables=variables, tag=name)
+    logs[name] = run("rough_superquadric_pulloff/in.rough_superquadric_pulloff", d, ranks=ranks, variables=variables,
+                     tag=name)
     runs[name] = table(os.path.join(d, "pull.txt"))
 
 rows = runs["adhesive"]
@@ -95,5 +101,17 @@ for what, radii, delta_of, force_of in (("wall", WALL, lambda r: c1 - r[1], lamb
            % (what, pull_off, pull_in))
     c.rel(pull_off, pull_exact, 1e-3, "%s: pull-off force vs the exact unloading branch's minimum (grid of 2001)" % what)
 compare_tables(c, runs["w0"], runs["none"], 0.0, "workOfAdhesion 0 equals gw_rough without cohesion")
+# a mesh plane: LIGGGHTS measures no gap to a mesh for superquadrics, so the
+# wall force acts only while the tip overlaps it (there it is the primitive
+# wall's), and the run says so once
+mesh = runs["mesh"]
+apart = [k for k in range(len(rows)) if c1 - rows[k][1] < -1e-9]
+touch = [k for k in range(len(rows)) if c1 - rows[k][1] > 1e-9]
+c.true(len(mesh) == len(rows) and all(mesh[k][2] == 0.0 for k in apart) and len(touch) > 20 and
+       max(abs(mesh[k][2] - rows[k][2]) for k in touch) <= 1e-9 * max(abs(rows[k][2]) for k in touch),
+       "mesh wall: no force while the tip is apart (%d rows), the primitive wall's force while it overlaps (%d rows)"
+       % (len(apart), len(touch)))
+c.true(logs["mesh"].count("superquadrics on a mesh wall") == 1, "mesh wall: the run warns once that the pull "
+       "acts only while the surfaces touch")
 compare_tables(c, runs["adhesive_np2"], rows, 1e-13, "2 ranks equal 1 rank")
 c.finish()
