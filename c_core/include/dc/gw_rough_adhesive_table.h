@@ -222,9 +222,10 @@ typedef struct {
    (dc_gw_rough_adhesive with dc_jkr_geometry summits): Catmull-Rom in
    each coordinate (C1 in x), ln rho on [ln RHO_MIN, 0] (NR cells), xi =
    x for x >= -6 and -6 - 6 LAMBDA ln(1 + ln(x/-6)/LAMBDA) below (C1;
-   nodes 1/XI_PER_UNIT apart on [XI_LO, XI_HI], x from -1.05e4 to 8),
-   eta rows 1/2 apart loading, 1/8 unloading (the kink moves with eta;
-   the circular table's eta clamping applies). The scales (ln(delta_c /
+   nodes 1/XI_PER_UNIT apart on [XI_LO, XI_HI], x from -1.36e4 to 8; 1/2
+   apart left 2.1e-4 next to the summits' kink at small rho), eta rows 1/4
+   apart loading, 1/8 unloading (the kink moves with eta; the circular
+   table's eta clamping applies). The scales (ln(delta_c /
    delta_c,circle(R_major)), ln(F_s/8 w R_major), k_e, ln r_oo) in ln rho
    at 32 nodes per cell. Beyond the grid: r held at x > 8 (force < 1e-15
    n_asp w R); below x_lo = x(XI_LO) every summit is pressed and the
@@ -235,23 +236,23 @@ typedef struct {
    caller warns: the correction keeps growing below, r ~ 3.3 at 1e-4 against 1.8 at 1e-3).
    Error against the exact law (tests/unit/test_gw_rough_adhesive_elliptic.c,
    2400 random points in physical units, rho 1e-3 to 1, tau over the
-   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 1.0e-4
-   (7.5e-5 at rho >= 0.01), unloading 2.1e-4 (5.9e-5; the worst near the
-   summits' kink, x ~ -D, at rho < 0.003); dF/d delta 4.1e-4 and 1.3e-3
-   (Catmull-Rom slopes; kn is the exact derivative of the interpolated F);
-   beyond x_lo 5.8e-5 (below 2e-8 of the whole force); the matched scales
-   within 5e-10 of dc_jkr_geometry. Cost: ~205 ns per set-up and step
-   (the unit test), against ~30 us for the exact law. */
+   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 4.0e-5,
+   unloading 9.0e-5 (3.9e-5 at rho >= 0.01; the worst near the summits'
+   kink, x ~ -D, at small rho); dF/d delta 4.0e-4 and 3.7e-4 (Catmull-Rom
+   slopes; kn is the exact derivative of the interpolated F); beyond x_lo
+   4.8e-5 (below 2e-8 of the whole force); the matched scales within
+   5e-10 of dc_jkr_geometry. 364k floats. Cost: ~205 ns per set-up and
+   step (the unit test), against ~30 us for the exact law. */
 #define DC_GWAE_RHO_MIN 1e-3
 #define DC_GWAE_NR 18
-#define DC_GWAE_LAMBDA 3.0
-#define DC_GWAE_XI_LO (-28.5)
+#define DC_GWAE_LAMBDA 1.0
+#define DC_GWAE_XI_LO (-19.0)
 #define DC_GWAE_XI_HI 8.0
-#define DC_GWAE_XI_PER_UNIT 2
-#define DC_GWAE_NXI 73                  /* cells on [XI_LO, XI_HI] */
-#define DC_GWAE_ETA_PER_UNIT_L 2
+#define DC_GWAE_XI_PER_UNIT 4
+#define DC_GWAE_NXI 108                 /* cells on [XI_LO, XI_HI] */
+#define DC_GWAE_ETA_PER_UNIT_L 4
 #define DC_GWAE_ETA_PER_UNIT_U 8
-#define DC_GWAE_NETA_L 25               /* eta cells on [ETA_LO, 8] */
+#define DC_GWAE_NETA_L 50               /* eta cells on [ETA_LO, 8] */
 #define DC_GWAE_NETA_U 100
 #define DC_GWAE_SCALE_PER_CELL 32
 
