@@ -11,7 +11,7 @@
 
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 */
 #define DC_GWAE_UB (-0.375 * 4.60115111447049)
-#define DC_GWAE_HR (6.907755278982137 / DC_GWAE_NR)   /* ln(1/RHO_MIN) / NR */
+#define DC_GWAE_HR (-log(DC_GWAE_RHO_MIN) / DC_GWAE_NR)   /* ln(1/RHO_MIN) / NR */
 
 /* Catmull-Rom weights of the nodes k-1 .. k+2 at t in [0, 1] of cell k */
 static inline void cr_weights(double t, double *w)

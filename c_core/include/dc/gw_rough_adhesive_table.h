@@ -233,18 +233,19 @@ typedef struct {
    (x_lo/x)^3/4, r_oo that of one summit's adhesive parts at infinite
    compression (whose d^-3/4 tail this is; the kink term decays as d^-1/2
    and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN (the
-   caller warns: the correction keeps growing below, r ~ 3.3 at 1e-4 against 1.8 at 1e-3).
+   caller warns: the correction keeps growing below: r ~ 1.8 at 1e-3,
+   4.3 at 1e-4, 12 at 1e-5).
    Error against the exact law (tests/unit/test_gw_rough_adhesive_elliptic.c,
-   2400 random points in physical units, rho 1e-3 to 1, tau over the
-   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 4.0e-5,
-   unloading 9.0e-5 (3.9e-5 at rho >= 0.01; the worst near the summits'
-   kink, x ~ -D, at small rho); dF/d delta 4.0e-4 and 3.7e-4 (Catmull-Rom
+   2400 random points in physical units, rho 1e-4 to 1, tau over the
+   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 3.9e-5,
+   unloading 9.3e-5 (5.3e-5 at rho >= 0.01; the worst near the summits'
+   kink, x ~ -D, at small rho); dF/d delta 6.8e-5 and 5.6e-4 (Catmull-Rom
    slopes; kn is the exact derivative of the interpolated F); beyond x_lo
-   4.8e-5 (below 2e-8 of the whole force); the matched scales within
-   5e-10 of dc_jkr_geometry. 364k floats. Cost: ~205 ns per set-up and
+   8.0e-5 (below 1e-8 of the whole force); the matched scales within
+   5e-10 of dc_jkr_geometry. 468k floats. Cost: ~205 ns per set-up and
    step (the unit test), against ~30 us for the exact law. */
-#define DC_GWAE_RHO_MIN 1e-3
-#define DC_GWAE_NR 18
+#define DC_GWAE_RHO_MIN 1e-4
+#define DC_GWAE_NR 24
 #define DC_GWAE_LAMBDA 1.0
 #define DC_GWAE_XI_LO (-19.0)
 #define DC_GWAE_XI_HI 8.0
