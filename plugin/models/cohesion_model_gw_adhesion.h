@@ -6,19 +6,21 @@
 
    Deck: pair_style gran model gw_rough tangential history cohesion gw_adhesion gwElliptic on
          fix ID all wall/gran model gw_rough tangential history cohesion gw_adhesion primitive ... gwElliptic on
+         (superquadrics: `surface superquadric` after `cohesion gw_adhesion`)
    Properties: workOfAdhesion (peratomtypepair, J/m^2, >= 0; 0 gives exactly
      gw_rough), surfaceRoughness (peratomtype, m: sigma = (sigma_i^2 +
      sigma_j^2)^1/2 per pair) and asperityCount (peratomtypepair) as
      gw_rough, youngsModulus and poissonsRatio (E*).
-   Spheres (circular summits) and superquadrics (elliptic summits of the
-   contact's relative principal radii, dc_gwa_table_radius_init_elliptic;
-   the overlap before touch from superquadric_gap.h, the radii from
-   superquadric_curvature.h with gw_rough's maxRadiusFactor). Pairs with
-   sigma = 0 get no force. The force acts from the Gaussian tail of the summit heights on (12 sigma
-   apart, dc_gwa_table_apart) and, once pressed, until the lowest attached summit
-   lets go, (D + 8) sigma apart at most
-   (dc_gwa_table_reach): the deck must set contact_distance_factor so that
-   the pair stays in reach; the run stops naming the value needed. */
+   Spheres: circular summits, what the contact's radius fixes kept in its
+   history (dc_gwa_table_contact). Superquadrics: elliptic summits of the
+   contact's relative principal radii (dc_gwa_table_radius_init_elliptic,
+   radii from superquadric_curvature.h with gw_rough's maxRadiusFactor, the
+   overlap before touch from superquadric_gap.h). Pairs with sigma = 0 get
+   no force. The force acts from the Gaussian tail of the summit heights on
+   (12 sigma apart, dc_gwa_table_apart) and, once pressed, until the lowest
+   attached summit lets go, (D + 8) sigma apart at most: the deck must set
+   contact_distance_factor so that the pair stays in reach; the run stops
+   naming the value needed. */
 #ifdef COHESION_MODEL
 COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #else
