@@ -18,11 +18,10 @@ tension (overlap -0.4 um, the neck formed) and sheared (inputs/adhesive_shear):
 Usage: check_adhesive_shear.py WORKDIR [--update]"""
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, compare_tables, jkr_sphere, run, save_reference, start, subsample, table
+from regress import ROOT, compare_tables, dclaw, jkr_sphere, run, save_reference, start, subsample, table
 
 work, update, c = start()
 E, nu, mu, w, R, d1 = 5e6, 0.3, 0.5, 0.05, 0.5e-3, -4e-7
@@ -66,14 +65,11 @@ for tmodel in ("cmd_tangential", "history"):
     d = os.path.join(work, "sq_" + tmodel)
     run("adhesive_shear/in.adhesive_shear_superquadric", d, variables={"tmodel": tmodel}, tag=tmodel)
     runs["sq_" + tmodel] = [r for r in table(os.path.join(d, "shear.txt")) if r[2] > 0]
-dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
-                     "..", "c_core", "dclaw")
-law = ["--R1", repr(0.5 * 1e-3 ** 2 / 1.5e-3), "--R2", repr(0.5 * 0.6e-3 ** 2 / 1.5e-3), "--Estar", repr(Estar), "--w", repr(w)]
-summary = subprocess.run([dclaw, "jkr_elliptic"] + law + ["--summary", "1"], capture_output=True, text=True).stdout.split()
-F_pull = float(summary[1].split(",")[4])
-state = subprocess.run([dclaw, "jkr_elliptic"] + law + ["--delta_min", "-2e-7", "--delta_max", "-2e-7", "--n", "1"],
-                       capture_output=True, text=True).stdout.split()
-F_sq = float(state[1].split(",")[2])
+law = {"R1": 0.5 * 1e-3 ** 2 / 1.5e-3, "R2": 0.5 * 0.6e-3 ** 2 / 1.5e-3, "Estar": Estar, "w": w}
+head, rows = dclaw("jkr_elliptic", summary=1, **law)
+F_pull = rows[0][head.index("pulloff_force")]
+head, rows = dclaw("jkr_elliptic", delta_min=-2e-7, delta_max=-2e-7, n=1, **law)
+F_sq = rows[0][head.index("force")]
 slide = [split(r)[1] for r in runs["sq_cmd_tangential"][len(runs["sq_cmd_tangential"]) // 2:]]
 want = mu * (F_sq + 2 * F_pull)
 c.true(F_sq < 0 and all(abs(x / want - 1) < 2e-2 for x in slide),

@@ -18,32 +18,18 @@
 - 2 MPI ranks equal 1 rank.
 Usage: check_rough_pulloff.py WORKDIR"""
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, compare_tables, run, start, table
+from regress import compare_tables, rough_adhesive_exact, run, start, summit_delta_break, table
 
 work, _, c = start()
 R, E, nu, sig, w, dmax = 1e-3, 5e6, 0.3, 1e-6, 0.05, 4e-6
 Estar = 1.0 / (2 * (1 - nu ** 2) / E)
-dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
-                     "..", "c_core", "dclaw")
 
 
 def exact(d0, d1, n):
-    """(delta, loading F, unloading F) of the exact law on a grid."""
-    out = subprocess.run([dclaw, "gw_rough", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(Estar), "--sigma", repr(sig),
-                          "--n_asp", "1", "--w", repr(w), "--delta_min", repr(d0), "--delta_max", repr(d1), "--n", str(n)],
-                         capture_output=True, text=True, check=True).stdout.strip().split("\n")
-    head = out[0].split(",")
-    rows = [[float(x) for x in l.split(",")] for l in out[1:]]
-    il, iu, ig = head.index("force_adhesive_loading"), head.index("force_adhesive_unloading"), head.index("force_gw_elliptic")
-    # gw_rough cuts the elastic GW force at delta = -3 sigma (its Gaussian
-    # tail); the cohesion model adds the adhesive part to it: beyond the cut
-    # the run carries the exact law less the elastic tail
-    return [(r[0], r[il] - (r[ig] if r[0] <= -3 * sig else 0.0), r[iu] - (r[ig] if r[0] <= -3 * sig else 0.0),
-             r[ig] if r[0] > -3 * sig else 0.0) for r in rows]
+    return rough_adhesive_exact((R, R), Estar, sig, w, d0, d1, n)
 
 
 runs = {}
@@ -61,9 +47,7 @@ Fmax = max(abs(r[2]) for r in rows)
 approach = [k for k in range(1, k_turn, 7) if abs(rows[k][2]) > 1e-3 * Fmax]
 # past the partly attached band: |delta_break| of one summit (dclaw
 # jkr_elliptic --summary 1: 1.11 um here)
-out = subprocess.run([dclaw, "jkr_elliptic", "--R1", repr(R), "--R2", repr(R), "--Estar", repr(Estar), "--w", repr(w),
-                      "--summary", "1"], capture_output=True, text=True, check=True).stdout.strip().split("\n")
-band = -float(out[1].split(",")[out[0].split(",").index("delta_break")])
+band = summit_delta_break((R, R), Estar, w)
 retract = [k for k in range(k_turn + 1, len(rows), 7) if abs(rows[k][2]) > 1e-3 * Fmax
            and deltas[k] < deltas[k_turn] - band]
 

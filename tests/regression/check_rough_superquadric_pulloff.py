@@ -26,18 +26,16 @@ ratio 0.29); the overlaps from the prescribed positions.
 Usage: check_rough_superquadric_pulloff.py WORKDIR"""
 import math
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, compare_tables, relative_radii, run, start, table
+from regress import (ROOT, compare_tables, relative_radii, rough_adhesive_exact, run, start, summit_delta_break,
+                     table)
 
 work, _, c = start()
 E, nu, w, dmax = 5e6, 0.3, 0.05, 4e-6
 sig = math.sqrt(2.0) * 1e-6                       # two rough surfaces
 Estar = 1.0 / (2 * (1 - nu ** 2) / E)
-dclaw = os.path.join(os.path.dirname(os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))),
-                     "..", "c_core", "dclaw")
 a1, b1, c1 = 0.001, 0.0006, 0.0015                # atom 1, c axis down
 a2, b2, c2 = 0.0015, 0.0006, 0.001                # atoms 2 and 3, a axis along x
 WALL = (a1 * a1 / c1, b1 * b1 / c1)
@@ -45,16 +43,7 @@ PAIR = relative_radii(a2 / b2 ** 2, a2 / c2 ** 2, a2 / b2 ** 2, a2 / c2 ** 2, ma
 
 
 def exact(radii, d0, d1, n):
-    """(delta, loading F, unloading F) of the exact law on a grid."""
-    out = subprocess.run([dclaw, "gw_rough", "--R1", repr(radii[0]), "--R2", repr(radii[1]), "--Estar", repr(Estar),
-                          "--sigma", repr(sig), "--n_asp", "1", "--w", repr(w), "--delta_min", repr(d0),
-                          "--delta_max", repr(d1), "--n", str(n)], capture_output=True, text=True, check=True).stdout
-    out = out.strip().split("\n")
-    head = out[0].split(",")
-    rows = [[float(x) for x in l.split(",")] for l in out[1:]]
-    il, iu, ig = head.index("force_adhesive_loading"), head.index("force_adhesive_unloading"), head.index("force_gw_elliptic")
-    return [(r[0], r[il] - (r[ig] if r[0] <= -3 * sig else 0.0), r[iu] - (r[ig] if r[0] <= -3 * sig else 0.0),
-             r[ig] if r[0] > -3 * sig else 0.0) for r in rows]
+    return rough_adhesive_exact(radii, Estar, sig, w, d0, d1, n)
 
 
 runs = {}
@@ -76,10 +65,7 @@ for what, radii, delta_of, force_of in (("wall", WALL, lambda r: c1 - r[1], lamb
     Fmax = max(abs(f) for f in forces)
     # retraction rows past the partly attached band: |delta_break| of one
     # elliptic summit (dclaw jkr_elliptic --summary 1: 0.80 um on the wall)
-    out = subprocess.run([dclaw, "jkr_elliptic", "--R1", repr(radii[0]), "--R2", repr(radii[1]), "--Estar",
-                          repr(Estar), "--w", repr(w), "--summary", "1"], capture_output=True, text=True,
-                         check=True).stdout.strip().split("\n")
-    band = -float(out[1].split(",")[out[0].split(",").index("delta_break")])
+    band = summit_delta_break(radii, Estar, w)
     approach = [k for k in range(1, k_turn, 7) if abs(forces[k]) > 1e-3 * Fmax]
     retract = [k for k in range(k_turn + 1, len(rows), 7) if abs(forces[k]) > 1e-3 * Fmax
                and deltas[k] < deltas[k_turn] - band]

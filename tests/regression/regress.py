@@ -9,6 +9,8 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 LIGGGHTS = os.environ.get("DC_LIGGGHTS", os.path.join(ROOT, "build", "bin", "liggghts"))
+# c_core's laws outside LIGGGHTS (built beside it)
+DCLAW = os.path.join(os.path.dirname(LIGGGHTS), "..", "c_core", "dclaw")
 
 
 class Checks:
@@ -213,3 +215,33 @@ def relative_radii(k1I, k2I, k1II, k2II, w):
     s = k1I + k2I + k1II + k2II
     d = math.sqrt((k1I - k2I) ** 2 + (k1II - k2II) ** 2 + 2 * (k1I - k2I) * (k1II - k2II) * math.cos(2 * w))
     return 2.0 / (s - d), 2.0 / (s + d)
+
+
+def dclaw(law, **keys):
+    """`dclaw LAW --key value ...`: its CSV output as (header, rows of floats)."""
+    args = [DCLAW, law]
+    for k, v in keys.items():
+        args += ["--" + k, repr(v) if isinstance(v, float) else str(v)]
+    out = subprocess.run(args, capture_output=True, text=True, check=True).stdout.strip().split("\n")
+    return out[0].split(","), [[float(x) for x in l.split(",")] for l in out[1:]]
+
+
+def rough_adhesive_exact(radii, Estar, sigma, w, d0, d1, n):
+    """(delta, loading F, unloading F, elastic F) of the exact rough contact
+    with adhesive JKR summits (dclaw gw_rough --w, asperityCount 1) at n
+    overlaps from d0 to d1, as gw_rough with cohesion gw_adhesion carries it:
+    gw_rough cuts the elastic GW force at delta = -3 sigma (its Gaussian
+    tail) and the cohesion model adds the adhesive part, so beyond the cut
+    the forces lack the elastic tail (elastic F 0 there)."""
+    head, rows = dclaw("gw_rough", R1=radii[0], R2=radii[1], Estar=Estar, sigma=sigma, n_asp=1, w=w, delta_min=d0,
+                       delta_max=d1, n=n)
+    il, iu, ig = head.index("force_adhesive_loading"), head.index("force_adhesive_unloading"), head.index("force_gw_elliptic")
+    return [(r[0], r[il] - (r[ig] if r[0] <= -3 * sigma else 0.0), r[iu] - (r[ig] if r[0] <= -3 * sigma else 0.0),
+             r[ig] if r[0] > -3 * sigma else 0.0) for r in rows]
+
+
+def summit_delta_break(radii, Estar, w):
+    """|delta_break| of one JKR summit of these relative radii (dclaw
+    jkr_elliptic --summary 1): the width of gw_adhesion's partly attached band."""
+    head, rows = dclaw("jkr_elliptic", R1=radii[0], R2=radii[1], Estar=Estar, w=w, summary=1)
+    return -rows[0][head.index("delta_break")]
