@@ -2980,6 +2980,20 @@ static double gwa_bound(const dc_gwa_table_pair *p, double R)
 #define GWA_FMT "E* %.17g w %.17g sigma %.17g n_asp %.17g R %.17g"
 #define GWA_ARGS(p, R) (p)->Estar, (p)->w, (p)->sigma, (p)->n_asp, (R)
 
+/* The step fuzz's contact, now and then a new one: history cleared, pair,
+   radius R0 (rho given: the ratio of its radii too), the overlap x 10
+   scales sc apart (sc: sigma or one summit's |delta_break|) */
+static void gwa_new_contact(double *hist, const dc_gwa_table_pair **p, double *R0, double *rho, double *sc, double *x)
+{
+  if (!(U() < 0.01)) return;
+  hist[0] = hist[1] = 0.0;
+  *p = &gapool[UI(nga)];
+  *R0 = U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos();
+  if (rho) *rho = U() < 0.8 ? fz_log(1e-4, 1.0) : fz_log(1e-14, 1.0);
+  *sc = fmax((*p)->sigma, -(*p)->ub * (*p)->dc_coef * cbrt(*R0));
+  *x = -10.0 * *sc;
+}
+
 static void fuzz_gwa_table(void)
 {
   fz_fn *f = fz_new("dc_gwa_table_x_near, _x_deep");
@@ -3094,13 +3108,7 @@ static void fuzz_gwa_table(void)
   const dc_gwa_table_pair *p = &gapool[0];
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
-    if (U() < 0.01) {   /* a new contact */
-      hist[0] = hist[1] = 0.0;
-      p = &gapool[UI(nga)];
-      R0 = U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos();
-      sc = fmax(p->sigma, -p->ub * p->dc_coef * cbrt(R0));
-      x = -10.0 * sc;
-    }
+    gwa_new_contact(hist, &p, &R0, NULL, &sc, &x);
     if (U() < 0.003) hist[UI(2)] = U() < 0.5 ? fz_wild() : fz_wide();
     x += sc * fz_sign(fz_log(1e-3, 3.0));
     if (U() < 0.01) x = -10.0 * sc;
@@ -3185,14 +3193,7 @@ static void fuzz_gwa_elliptic(void)
   const dc_gwa_table_pair *p = &gapool[0];
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
-    if (U() < 0.01) {   /* a new contact */
-      hist[0] = hist[1] = 0.0;
-      p = &gapool[UI(nga)];
-      R0 = U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos();
-      rho = U() < 0.8 ? fz_log(1e-4, 1.0) : fz_log(1e-14, 1.0);
-      sc = fmax(p->sigma, -p->ub * p->dc_coef * cbrt(R0));
-      x = -10.0 * sc;
-    }
+    gwa_new_contact(hist, &p, &R0, &rho, &sc, &x);
     x += sc * fz_sign(fz_log(1e-3, 3.0));
     if (U() < 0.01) x = -10.0 * sc;
     const double Rmaj = A(R0), Rmin = A(rho * R0), d = A(x), h0[2] = {hist[0], hist[1]};
