@@ -13,8 +13,10 @@
 
 #if defined(__GNUC__)
 #define ALWAYS_INLINE inline __attribute__((always_inline))
+#define NOINLINE __attribute__((noinline))
 #else
 #define ALWAYS_INLINE inline
+#define NOINLINE
 #endif
 
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
@@ -603,13 +605,13 @@ int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table
   return DC_OK;
 }
 
-int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
-                              dc_gwa_table_out *o)
+/* dc_gwa_table_step_contact for any contact (the radius set up from the
+   record: the same operations as dc_gwa_table_radius_init without the cube
+   root and the logarithm; the eta cell set up from the stored eta, clamped:
+   clamping again changes nothing, only if the step forms a cell) */
+static NOINLINE int step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta,
+                                     double *hist, dc_gwa_table_out *o)
 {
-  /* the radius set-up from the record: the same operations as
-     dc_gwa_table_radius_init without the cube root and the logarithm; the
-     eta cell is set up from the stored eta (clamped: clamping again
-     changes nothing) only if the step forms a cell (eta_ready) */
   dc_gwa_table_radius r;
   r.R = c->R;
   r.Fs = p->F_coef * c->R;
@@ -620,6 +622,48 @@ int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *
   r.cell.j = -1;
   r.ell.on = 0;   /* circular summits */
   return step(p, &r, c->cell, delta, hist, o);
+}
+
+int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
+                              dc_gwa_table_out *o)
+{
+  /* A settled contact: touched, wholly on one branch, in the near cell it
+     kept, above the blend and without the kink term. The operations of
+     step() on that path, in its order (the same bits; the fuzz and the
+     unit test compare), without its set-up; anything else (non-finite
+     input too) takes step_contact_any. */
+  if (hist[0] == 1.0 && fabs(hist[1]) <= DBL_MAX) {
+    const double dmax = delta > hist[1] ? delta : hist[1];
+    const double xi = (dmax - delta) / c->db;
+    int b;
+    double x = -delta * p->inv_sigma;
+    if (!(xi > 0.0)) b = DC_GW_LOADING;
+    else if (xi >= 1.0) { b = DC_GW_UNLOADING; x -= c->db * p->inv_sigma; }
+    else b = -1;
+    if (b >= 0 && x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
+        !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
+      const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
+      int i = (int)cx;
+      if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
+      if (c->cell[0] == CELL_KEY_NEAR(b, i)) {
+        double L, Lc;
+        cubic_eval(c->cell + 1, cx - i, &L, &Lc);
+        const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
+        const double G = -exp_table(L), Gx = G * Lx;
+        const double Fs = p->F_coef * c->R;
+        const double F = Fs * G, kn = -Fs * Gx * p->inv_sigma;
+        if (isfinite(F) && isfinite(kn)) {
+          hist[0] = 1.0;
+          hist[1] = dmax;
+          o->F = F;
+          o->kn = kn;
+          o->weight = b == DC_GW_UNLOADING ? 1.0 : 0.0;
+          return DC_OK;
+        }
+      }
+    }
+  }
+  return step_contact_any(p, c, delta, hist, o);
 }
 
 int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)

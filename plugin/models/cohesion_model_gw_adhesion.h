@@ -161,7 +161,7 @@ public:
       return;
     }
 #endif
-    const double delta = closeSphereOverlap(scdata);
+    const double delta = closeSphereOverlapAgain(scdata);
     if (adhesion(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
   }
 
@@ -211,8 +211,10 @@ private:
   }
 #endif
 
-  /* Applies the adhesive force at overlap delta; false when none acts. */
-  bool adhesion(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
+  /* Applies the adhesive force at overlap delta; false when none acts.
+     Inline in both callers: it runs once per contact and step. */
+  __attribute__((always_inline)) inline bool adhesion(SurfacesIntersectData &sidata, double delta,
+                                                      ForceData &i_forces, ForceData &j_forces)
   {
     const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
     const dc_gwa_table_pair &p = pairs[k];
@@ -233,18 +235,22 @@ private:
       memcpy(&copy, con, sizeof copy);
       con = &copy;
     }
-    if (con->R != R) {
-      const int st = dc_gwa_table_contact_init(&p, R, con);
-      if (st != DC_OK) {
-        char msg[256];
-        snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
-        error->one(FLERR, msg);
-      }
-    }
+    if (con->R != R) setUp(p, R, con);
     if (h[0] != 0.0) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
     dc_gwa_table_out o;
     const int st = dc_gwa_table_step_contact(&p, con, delta, h, &o);
     return finish(sidata, st, delta, R, h, o, i_forces, j_forces);
+  }
+
+  /* A contact's record for radius R (a new contact, or another in its slot). */
+  __attribute__((noinline)) void setUp(const dc_gwa_table_pair &p, double R, dc_gwa_table_contact *con)
+  {
+    const int st = dc_gwa_table_contact_init(&p, R, con);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
+      error->one(FLERR, msg);
+    }
   }
 
   /* The contact's history, or (a pass that must not change it) a copy in scratch. */
@@ -260,24 +266,23 @@ private:
   void checkReach(const SurfacesIntersectData &sidata, double reach)
   {
     const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
-    if (neighbor->contactDistanceFactor * r0 < r0 + reach) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
-               "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
-      error->one(FLERR, msg);
-    }
+    if (neighbor->contactDistanceFactor * r0 < r0 + reach) reachError(reach, r0);
+  }
+  __attribute__((noinline)) void reachError(double reach, double r0)
+  {
+    char msg[256];
+    snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
+             "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
+    error->one(FLERR, msg);
   }
 
   /* After the step (status st, history h, output o): the contact flag and
      the force; false when none acts. */
-  bool finish(SurfacesIntersectData &sidata, int st, double delta, double R, const double *h,
-              const dc_gwa_table_out &o, ForceData &i_forces, ForceData &j_forces)
+  __attribute__((always_inline)) inline bool finish(SurfacesIntersectData &sidata, int st, double delta, double R,
+                                                    const double *h, const dc_gwa_table_out &o, ForceData &i_forces,
+                                                    ForceData &j_forces)
   {
-    if (st != DC_OK) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
-      error->one(FLERR, msg);
-    }
+    if (st != DC_OK) stepError(st, delta, R);
     if (sidata.contact_flags) {
       if (h[0] != 0.0) *sidata.contact_flags |= CONTACT_COHESION_MODEL;
       else *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
@@ -285,6 +290,13 @@ private:
     if (o.F == 0.0) return false;
     applyNormalForce(sidata, o.F, atom->x, i_forces, j_forces);
     return true;
+  }
+
+  __attribute__((noinline)) void stepError(int st, double delta, double R)
+  {
+    char msg[256];
+    snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
+    error->one(FLERR, msg);
   }
 
   int history_offset, contact_offset, ntypes;

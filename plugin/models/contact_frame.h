@@ -32,15 +32,26 @@ inline double stockEffectiveRadius(const SurfacesIntersectData &sidata, bool sup
 }
 
 /* For a sphere contact handed to surfacesClose (not touching): the overlap
-   (negative); fills en for pairs (walls have set it). Both LIGGGHTS
-   callers pass a SurfacesIntersectData. */
+   (negative), left in deltan too; fills en for pairs (walls have set both).
+   Both LIGGGHTS callers pass a SurfacesIntersectData. */
 inline double closeSphereOverlap(SurfacesCloseData &scdata)
 {
   SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
   if (sidata.is_wall) return sidata.deltan;
   const double r = sqrt(sidata.rsq);
   for (int k = 0; k < 3; k++) sidata.en[k] = sidata.delta[k] / r;
-  return sidata.radsum - r;
+  sidata.deltan = sidata.radsum - r;
+  return sidata.deltan;
+}
+
+/* closeSphereOverlap for a sub-model after the normal model: a sub-model
+   that acted on this pair in this surfacesClose call (has_force_update,
+   which LIGGGHTS clears before the call) has called closeSphereOverlap, so
+   deltan and en hold; otherwise they are computed here. */
+inline double closeSphereOverlapAgain(SurfacesCloseData &scdata)
+{
+  SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+  return sidata.has_force_update ? sidata.deltan : closeSphereOverlap(scdata);
 }
 
 /* The same, with the normal velocity; fills meff too for pairs. */
@@ -96,10 +107,30 @@ inline void closeContactPointVelocity(const SurfacesCloseData &d, const double *
   for (int k = 0; k < 3; k++) vtr[k] = v[k] - vn * en[k];
 }
 
+#ifdef NONSPHERICAL_ACTIVE_FLAG
+/* The torques of applyNormalForce for non-spherical particles (a force off
+   the centre line). */
+inline void applyNormalTorque(const SurfacesIntersectData &sidata, double Fn, double **x, ForceData &i_forces,
+                              ForceData &j_forces)
+{
+  double xc[3], t[3];
+  const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
+  LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
+  LAMMPS_NS::vectorCross3D(xc, Fi, t);
+  for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
+  if (!sidata.is_wall) {
+    LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
+    LAMMPS_NS::vectorCross3D(xc, Fi, t);
+    for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
+  }
+}
+#endif
+
 /* Adds Fn along en to i (and -Fn to j), with the torque of a force off the
-   centre line for non-spherical particles; walls scale by area_ratio. */
-inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, double **x,
-                             ForceData &i_forces, ForceData &j_forces)
+   centre line for non-spherical particles; walls scale by area_ratio.
+   Inline: it runs once per contact and sub-model that acts. */
+__attribute__((always_inline)) inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn,
+                                                            double **x, ForceData &i_forces, ForceData &j_forces)
 {
   const double Fn_ = sidata.is_wall ? Fn * sidata.area_ratio : Fn;
   const double F[3] = {Fn_ * sidata.en[0], Fn_ * sidata.en[1], Fn_ * sidata.en[2]};
@@ -107,18 +138,7 @@ inline void applyNormalForce(const SurfacesIntersectData &sidata, double Fn, dou
   if (!sidata.is_wall)
     for (int k = 0; k < 3; k++) j_forces.delta_F[k] -= F[k];
 #ifdef NONSPHERICAL_ACTIVE_FLAG
-  if (sidata.is_non_spherical) {
-    double xc[3], t[3];
-    const double Fi[3] = {Fn * sidata.en[0], Fn * sidata.en[1], Fn * sidata.en[2]};
-    LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
-    LAMMPS_NS::vectorCross3D(xc, Fi, t);
-    for (int k = 0; k < 3; k++) i_forces.delta_torque[k] += t[k];
-    if (!sidata.is_wall) {
-      LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
-      LAMMPS_NS::vectorCross3D(xc, Fi, t);
-      for (int k = 0; k < 3; k++) j_forces.delta_torque[k] -= t[k];
-    }
-  }
+  if (sidata.is_non_spherical) applyNormalTorque(sidata, Fn, x, i_forces, j_forces);
 #else
   (void)x;
 #endif

@@ -156,8 +156,8 @@ public:
       step(sidata, vtr, 0.0, 0.0, i_forces, j_forces);
       return;
     }
-    /* spheres: the normal model has set en (and, for pairs, the overlap from r) */
-    const double delta = sidata.is_wall ? sidata.deltan : sidata.radsum - sqrt(sidata.rsq);
+    /* spheres: a formed contact's normal model has set en and the overlap */
+    const double delta = closeSphereOverlapAgain(scdata);
     closeTangentialVelocity(sidata, sidata.en, delta, vtr);
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     step(sidata, vtr, sidata.radi - 0.5 * delta, sidata.radj - 0.5 * delta, i_forces, j_forces);

@@ -102,13 +102,17 @@
    adds ~70 ns (cbrt, log). Exact law ~9.5 us. With the contact's record
    (dc_gwa_table_step_contact: the radius set up once per contact, and the
    cubic of the last cell kept) a settled contact's step reads that cubic:
-   22 ns against 30 ns with the radius kept (unit test, tau 36, one
-   cell). In the bench scenes (callgrind, 10000 steps, tau ~ 36; 91 % of
-   the steps read the kept cell): monodisperse spheres 211 instructions
-   per step against 200 with the per-type-pair memo of cells this record
-   replaced (the whole run +0.5 %); polydisperse spheres 209, the whole
-   run 17 % fewer instructions than with the radius set up and the cells
-   formed at every step. The interpolation is in the cubic's
+   19 ns against 30 ns with the radius kept (unit test, tau 36, one
+   cell). A settled contact (touched, wholly on one branch, in the near
+   cell it kept, above the blend, no kink term) takes a short path
+   without the set-up: in the monodisperse bench scene (callgrind, 10000
+   steps, tau ~ 36) 90 % of the steps; 168 instructions per step on
+   average (the short path's tests 137, the other steps 312 more),
+   against 216 without the short path (and 200 with the per-type-pair
+   memo of cells the record replaced);
+   polydisperse spheres: the record gave the whole run 17 % fewer
+   instructions than with the radius set up and the cells formed at
+   every step. The interpolation is in the cubic's
    powers of t and e^L is an inline polynomial (within 2 ulp of exp): the
    errors above are unchanged in their stated digits. */
 #ifndef DC_GW_ROUGH_ADHESIVE_TABLE_H
