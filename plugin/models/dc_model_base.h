@@ -55,6 +55,7 @@
 #include "contact_frame.h"
 #include "contact_models.h"
 #include "contact_patch.h"
+#include "warn_once.h"
 #include "comm.h"
 #include "error.h"
 #include "force.h"
@@ -81,7 +82,7 @@ public:
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
     dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
-    curvatureCheck(0.0), name_(name), unsupported_(unsupported), hertzRangeWarned_(false), checkMax_(0.0), checked_(0), refreshed_(0), over_()
+    curvatureCheck(0.0), name_(name), unsupported_(unsupported), checkMax_(0.0), checked_(0), refreshed_(0), over_()
   {}
 
   void registerSettings(Settings &settings)
@@ -374,13 +375,12 @@ protected:
   }
 
   /* Hertz theory holds while the contact semi-axis a is small against the
-     bodies' curvature radii: a warning (once per model and process, naming
-     the atoms) when a > R_minor / 2 (Fessler & Ollerton's limit, quoted in
-     the review), a2 = a^2. */
+     bodies' curvature radii: a warning (once per process for the pair style
+     and every wall together, naming the atoms) when a > R_minor / 2
+     (Fessler & Ollerton's limit, quoted in the review), a2 = a^2. */
   void checkHertzRange(const SurfacesIntersectData &sidata, double a2, double R_minor)
   {
-    if (a2 <= 0.25 * R_minor * R_minor || hertzRangeWarned_) return;
-    hertzRangeWarned_ = true;
+    if (a2 <= 0.25 * R_minor * R_minor || warnedBefore(DC_WARN_HERTZ_RANGE)) return;
     char msg[320];
     snprintf(msg, sizeof msg, "Normal model %s: the contact of atom %d with %s %d has a semi-axis %g m above half "
              "its smaller relative curvature radius (%g m / 2), where Hertz theory no longer holds (overlap %g m; "
@@ -456,7 +456,6 @@ private:
 
   const char *name_;
   int unsupported_;
-  bool hertzRangeWarned_;
   double checkMax_;   /* curvatureCheck: the largest deviation seen, on how many reuses, refreshes */
   long checked_, refreshed_, over_[2];   /* over_: deviations above t, 10 t */
   ContactPatchWriter patch;

@@ -80,6 +80,15 @@ code3, out3 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range"
 warn = [l for l in out3.splitlines() if "where Hertz theory no longer holds" in l]
 c.true(code3 == 0 and len(warn) >= 1 and "atom 1 with atom 2" in warn[0] and len(set(warn)) == 1,
        "overlap beyond the Hertz range: one warning naming the contact (%s)" % (warn[0].strip() if warn else "none"))
+# once per process for the pair style and every wall together: the pair
+# and two walls all beyond the range
+code3, out3 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range_walls"),
+                  variables=dict(ok, model="hertz_elliptic tangential history", x0="0.0007", walls=1), tag="range",
+                  expect_error=True)
+log3 = open(os.path.join(work, "hertz_range_walls", "log.range")).read()
+warn = [l for l in log3.splitlines() if "where Hertz theory no longer holds" in l]
+c.true(code3 == 0 and len(warn) == 1,
+       "pair and two walls beyond the Hertz range: one warning in the log (%d: %s)" % (len(warn), warn))
 for model, prop in (("jamari_ep", "props_hardness"), ("jkr_elliptic", "props_jkr"), ("gw_rough", "props_rough_reach")):
     code4, out4 = run("deck_errors/in.sphere_base", os.path.join(work, "hertz_range_" + model),
                       variables=dict(ok, model=model + " tangential history", props=props(prop), settings="", x0="0.0007"),
