@@ -11,7 +11,6 @@
 
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 */
 #define DC_GWAE_UB (-0.375 * 4.60115111447049)
-#define DC_GWAE_HR (-log(DC_GWAE_RHO_MIN) / DC_GWAE_NR)   /* ln(1/RHO_MIN) / NR */
 
 /* Catmull-Rom weights of the nodes k-1 .. k+2 at t in [0, 1] of cell k */
 static inline void cr_weights(double t, double *w)
@@ -43,6 +42,38 @@ static inline int cr_cell(double u, int n, double *w)
   return k;
 }
 
+/* cell and weights of the nodes i-1 .. i+2 at -ln rho = L on a branch's ln
+   rho grid (n2 its NR2): cubic Hermite with three-point slopes, exact for
+   quadratics; Catmull-Rom where the cells are even */
+static inline int ln_rho_cell(double L, int n2, double *w)
+{
+  const double h1 = dc_gwae_L_node(1, n2), L1 = dc_gwae_L_node(DC_GWAE_NR1, n2);
+  const double h2 = dc_gwae_L_node(DC_GWAE_NR1 + 1, n2) - L1;
+  const double u = L < L1 ? L / h1 : DC_GWAE_NR1 + (L - L1) / h2;
+  int i = (int)u;
+  if (i > DC_GWAE_NR1 + n2 - 1) i = DC_GWAE_NR1 + n2 - 1;
+  const double t = u - i;
+  if (i + 1 < DC_GWAE_NR1 || i > DC_GWAE_NR1) {
+    cr_weights(t, w);
+    return i;
+  }
+  const double l0 = dc_gwae_L_node(i - 1, n2), l1 = dc_gwae_L_node(i, n2), l2 = dc_gwae_L_node(i + 1, n2),
+               l3 = dc_gwae_L_node(i + 2, n2), h = l2 - l1;
+  const double t2 = t * t, t3 = t2 * t;
+  const double h00 = 2.0 * t3 - 3.0 * t2 + 1.0, h10 = t3 - 2.0 * t2 + t, h01 = 3.0 * t2 - 2.0 * t3, h11 = t3 - t2;
+  /* h times the slope at l1 (from l0, l1, l2) and at l2 (from l1, l2, l3) */
+  double a = l1 - l0, c = h;
+  const double p0 = -c / (a * (a + c)) * h, p1 = (c - a) / (a * c) * h, p2 = a / (c * (a + c)) * h;
+  a = h;
+  c = l3 - l2;
+  const double q1 = -c / (a * (a + c)) * h, q2 = (c - a) / (a * c) * h, q3 = a / (c * (a + c)) * h;
+  w[0] = h10 * p0;
+  w[1] = h00 + h10 * p1 + h11 * q1;
+  w[2] = h01 + h10 * p2 + h11 * q2;
+  w[3] = h11 * q3;
+  return i;
+}
+
 int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
                                       dc_gwa_table_radius *r)
 {
@@ -50,19 +81,27 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
   dc_gwa_table_radius q = {0};
   q.R = R_major;
   if (p->w > 0.0) {
-    dc_gwa_table_ell e = {0};
-    e.on = 1;
-    e.rho = R_minor / R_major;
-    if (e.rho < DC_GWAE_RHO_MIN) e.rho = DC_GWAE_RHO_MIN;
-    const double ur = -log(e.rho) / DC_GWAE_HR;
-    /* the scales, finer in ln rho */
+    dc_gwa_table_ell *e = &q.ell;   /* q is zeroed */
+    e->on = 1;
+    e->rho = R_minor / R_major;
+    if (e->rho < DC_GWAE_RHO_MIN) e->rho = DC_GWAE_RHO_MIN;
+    const double L = -log(e->rho);
+    /* the scales, uniform and finer in ln rho */
     double ws[4], s[4] = {0.0, 0.0, 0.0, 0.0};
-    const int ks = cr_cell(ur * DC_GWAE_SCALE_PER_CELL, DC_GWAE_NR * DC_GWAE_SCALE_PER_CELL, ws);
+    const int ks = cr_cell(L / dc_gwae_L_node(1, 1) * DC_GWAE_SCALE_PER_CELL, DC_GWAE_NRS * DC_GWAE_SCALE_PER_CELL, ws);
     for (int n = 0; n < 4; n++)
       for (int c = 0; c < 4; c++) s[c] += ws[n] * dc_gwae_scale[ks + n][c];
-    e.ke = s[2];
-    e.lr_inf = s[3];
-    e.i = cr_cell(ur, DC_GWAE_NR, e.wr);
+    e->ke = s[2];
+    e->lr_inf = s[3];
+    const double u = L / dc_gwae_L_node(1, 1);
+    if (u < DC_GWAE_NR1 - 1) {   /* the branches' grids agree and are even */
+      e->i[0] = e->i[1] = (int)u;
+      cr_weights(u - e->i[0], e->wr[0]);
+      for (int n = 0; n < 4; n++) e->wr[1][n] = e->wr[0][n];
+    } else {
+      e->i[0] = ln_rho_cell(L, DC_GWAE_NR2_L, e->wr[0]);
+      e->i[1] = ln_rho_cell(L, DC_GWAE_NR2_U, e->wr[1]);
+    }
     /* the circle of R_major's scales (dc_gwa_table_radius_init) times the
        matched ones': delta_c = dc_coef R^1/3 e^s0, F_s = 8 w n_asp R e^s1 */
     const double l3 = log(R_major) / 3.0;
@@ -72,9 +111,8 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
     q.reach = q.db + DC_GWA_TABLE_X_HI * p->sigma;
     dc_gwa_table_eta_cell(p->ln_sigma_dc - l3 - s[0], &q.cell);
     const double eta = q.cell.eta, lo = DC_GWA_TABLE_ETA_LO;
-    e.j[0] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_NETA_L, e.we[0]);
-    e.j[1] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_U, DC_GWAE_NETA_U, e.we[1]);
-    q.ell = e;
+    e->j[0] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_NETA_L, e->we[0]);
+    e->j[1] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_U, DC_GWAE_NETA_U, e->we[1]);
     if (!(isfinite(q.Fs) && isfinite(q.db) && isfinite(q.reach) && isfinite(eta))) return DC_ERANGE;
   }
   *r = q;
@@ -96,9 +134,9 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double a[4] = {0.0, 0.0, 0.0, 0.0};
   for (int jj = 0; jj < 4; jj++)
     for (int ii = 0; ii < 4; ii++) {
-      const double w = e->we[b][jj] * e->wr[ii];
-      const float *row = b == DC_GW_UNLOADING ? dc_gwae_unload[e->j[1] + jj][e->i + ii] + k
-                                              : dc_gwae_load[e->j[0] + jj][e->i + ii] + k;
+      const double w = e->we[b][jj] * e->wr[b][ii];
+      const float *row = b == DC_GW_UNLOADING ? dc_gwae_unload[e->j[1] + jj][e->i[1] + ii] + k
+                                              : dc_gwae_load[e->j[0] + jj][e->i[0] + ii] + k;
       for (int kk = 0; kk < 4; kk++) a[kk] += w * row[kk];
     }
   double lr = wx[0] * a[0] + wx[1] * a[1] + wx[2] * a[2] + wx[3] * a[3];

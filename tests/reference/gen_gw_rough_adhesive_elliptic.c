@@ -11,12 +11,16 @@
      k_e = F_gw_elastic(h = 0) / (F_s,m c_H tau^3/2 F_3/2(0)),
 
    stored as ln r in float (7 digits, far below the interpolation error).
-   Ghost nodes (one beyond each end) from the law too, except in eta (the
-   circular table is clamped beyond its rows) and at x > 8 (the circular
-   table's continuation): there cubic extrapolation, exact for cubics.
+   Nodes in ln rho at dc_gwae_L_node (NR1 cells to 1e-4, NR2 per branch
+   below). Ghost nodes (one beyond each end) from the law too, except in
+   eta (the circular table is clamped beyond its rows), at x > 8 (the
+   circular table's continuation), there extrapolated through three nodes
+   (exact for quadratics), and below RHO_MIN (the law's smallest ratio),
+   there through four (exact for cubics; three left 1e-4 in the last cell).
    The scales: ln(delta_c,m / delta_c(R_major)), ln(F_s,m / 8 w R_major),
-   k_e at SCALE_PER_CELL nodes per ln rho cell (ghosts from the law).
-   About 10 s on 2 cores with OpenMP (without it, 20 s).
+   k_e, ln r_oo at SCALE_PER_CELL nodes per cell of ln(1e4)/NR1 on
+   [ln RHO_MIN, 0] (the ghost below RHO_MIN through four nodes).
+   About 16 s on 2 cores with OpenMP.
    Regenerate (from the repository root, library built in B):
      cc -O2 -fopenmp -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gen_gw_rough_adhesive_elliptic.c \
         B/c_core/libdemcontact.a -lgsl -lgslcblas -lm -o /tmp/gen_gwae && \
@@ -33,9 +37,7 @@
 
 #define UB (-0.375 * 4.60115111447049)
 #define CH 0.15005271935951767
-#define HR (log(1.0 / DC_GWAE_RHO_MIN) / DC_GWAE_NR)
 #define NXN (DC_GWAE_NXI + 3)   /* nodes with ghosts */
-#define NRN (DC_GWAE_NR + 3)
 
 static void fail(const char *what, double lr, int b, double x, double eta)
 {
@@ -45,7 +47,10 @@ static void fail(const char *what, double lr, int b, double x, double eta)
 
 static void geometry(double lr, dc_jkr_geom *g, double *dcm, double *Fsm)
 {
-  if (dc_jkr_geometry(1.0, exp(lr), 1.0, 1.0, g) != DC_OK) fail("dc_jkr_geometry", lr, 0, 0, 0);
+  /* the last node, ln RHO_MIN up to rounding, at the law's smallest ratio */
+  double rho = exp(lr);
+  if (rho < DC_GWAE_RHO_MIN && rho > DC_GWAE_RHO_MIN * (1.0 - 1e-12)) rho = DC_GWAE_RHO_MIN;
+  if (dc_jkr_geometry(1.0, rho, 1.0, 1.0, g) != DC_OK) fail("dc_jkr_geometry", lr, 0, 0, 0);
   *dcm = g->delta_break / UB;
   *Fsm = g->F_break / (-5.0 * M_PI / 48.0);
 }
@@ -81,20 +86,29 @@ static double ln_ratio(double lr, int b, double x, double eta)
   return log(r);
 }
 
-static void branch_table(int b, int ne, int per_unit, float *t)
+static void branch_table(int b, int ne, int per_unit, int n2, float *t)
 {
+  const int nr = DC_GWAE_NR1 + n2, NRN = nr + 3;
 #define AT(j, i, k) t[((size_t)(j) * NRN + (i)) * NXN + (k)]
+  if (fabs(dc_gwae_L_node(nr, n2) + log(DC_GWAE_RHO_MIN)) > 1e-12) fail("the ln rho grid misses RHO_MIN", 0, b, 0, 0);
 #pragma omp parallel for schedule(dynamic)
   for (int j = 0; j <= ne; j++)
-    for (int i = -1; i <= DC_GWAE_NR + 1; i++)
+    for (int i = -1; i <= nr; i++)
       for (int k = -1; k <= DC_GWAE_NXI; k++)
-        AT(j + 1, i + 1, k + 1) = (float)ln_ratio(-i * HR, b, dc_gwae_x_of_xi(DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT),
-                                                  DC_GWA_TABLE_ETA_LO + (double)j / per_unit);
+        AT(j + 1, i + 1, k + 1) =
+            (float)ln_ratio(-dc_gwae_L_node(i, n2), b, dc_gwae_x_of_xi(DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT),
+                            DC_GWA_TABLE_ETA_LO + (double)j / per_unit);
   for (int j = 1; j <= ne + 1; j++)
-    for (int i = 0; i < NRN; i++) {
+    for (int i = 0; i < NRN - 1; i++) {
       float *r = &AT(j, i, 0);
       r[NXN - 1] = 3.0f * r[NXN - 2] - 3.0f * r[NXN - 3] + r[NXN - 4];
     }
+  /* the ghost below RHO_MIN (the law stops there): cubic through the last
+     four nodes (three, exact for quadratics only, left 1e-4 in the last cell) */
+  for (int j = 1; j <= ne + 1; j++)
+    for (int k = 0; k < NXN; k++)
+      AT(j, NRN - 1, k) = 4.0f * AT(j, NRN - 2, k) - 6.0f * AT(j, NRN - 3, k) + 4.0f * AT(j, NRN - 4, k) -
+                          AT(j, NRN - 5, k);
   for (int i = 0; i < NRN; i++)
     for (int k = 0; k < NXN; k++) {
       AT(0, i, k) = 3.0f * AT(1, i, k) - 3.0f * AT(2, i, k) + AT(3, i, k);
@@ -103,8 +117,9 @@ static void branch_table(int b, int ne, int per_unit, float *t)
 #undef AT
 }
 
-static void print_table(const char *name, int ne, const float *t)
+static void print_table(const char *name, int ne, int nr, const float *t)
 {
+  const int NRN = nr + 3;
   printf("static const float %s[%d][%d][%d] = {\n", name, ne + 3, NRN, NXN);
   for (int j = 0; j < ne + 3; j++) {
     printf("{\n");
@@ -121,33 +136,44 @@ static void print_table(const char *name, int ne, const float *t)
 int main(void)
 {
   const int ne[2] = {DC_GWAE_NETA_L, DC_GWAE_NETA_U}, pu[2] = {DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_ETA_PER_UNIT_U};
+  const int n2[2] = {DC_GWAE_NR2_L, DC_GWAE_NR2_U}, nr[2] = {DC_GWAE_NR1 + n2[0], DC_GWAE_NR1 + n2[1]};
   float *t[2];
   for (int b = 0; b < 2; b++) {
-    t[b] = malloc(sizeof(float) * (ne[b] + 3) * NRN * NXN);
+    t[b] = malloc(sizeof(float) * (ne[b] + 3) * (nr[b] + 3) * NXN);
     if (!t[b]) return 1;
-    branch_table(b, ne[b], pu[b], t[b]);
+    branch_table(b, ne[b], pu[b], n2[b], t[b]);
   }
-  const int ns = DC_GWAE_NR * DC_GWAE_SCALE_PER_CELL;
+  const int ns = DC_GWAE_NRS * DC_GWAE_SCALE_PER_CELL;
+  const double hs = dc_gwae_L_node(1, 1) / DC_GWAE_SCALE_PER_CELL;
+  if (fabs(ns * hs + log(DC_GWAE_RHO_MIN)) > 1e-12) fail("the scales miss RHO_MIN", 0, 0, 0, 0);
   printf("/* Generated by tests/reference/gen_gw_rough_adhesive_elliptic.c: do not edit.\n"
          "   ln r per branch [eta node][ln rho node][xi node], each with one ghost\n"
-         "   node first; the scales per ln rho node (SCALE_PER_CELL per cell, one\n"
-         "   ghost first): ln(delta_c,m/delta_c(R_major)), ln(F_s,m/8 w R_major), k_e,\n"
+         "   node first; the scales per ln rho node (SCALE_PER_CELL per cell of\n"
+         "   ln(1e4)/NR1, one ghost first): ln(delta_c,m/delta_c(R_major)), ln(F_s,m/8 w R_major), k_e,\n"
          "   ln r_oo; x_lo = x(XI_LO)\n"
          "   (dc/gw_rough_adhesive_table.h, \"Elliptic summits\"). */\n");
   printf("static const double dc_gwae_x_lo = %.17g;\n", dc_gwae_x_of_xi(DC_GWAE_XI_LO));
   printf("static const double dc_gwae_scale[%d][4] = {\n", ns + 3);
   const double dc1 = 0.5 * pow(8.0 / M_PI, 2.0 / 3.0);   /* delta_c of the circle R = 1 */
-  for (int n = -1; n <= ns + 1; n++) {
-    const double lr = -n * HR / DC_GWAE_SCALE_PER_CELL;
+  double(*sc)[4] = malloc(sizeof(double[4]) * (ns + 3));
+  if (!sc) return 1;
+  for (int n = -1; n <= ns; n++) {
+    const double lr = -n * hs;
     dc_jkr_geom g;
     double dcm, Fsm;
     geometry(lr, &g, &dcm, &Fsm);
     /* r_oo: at eta = 8, x = -1e4 the summits' mean compression is 3e7 delta_c */
-    printf("{%.17g,%.17g,%.17g,%.17g}%s\n", log(dcm / dc1), log(Fsm / 8.0), ke_of(lr),
-           ln_ratio(lr, DC_GW_LOADING, -1e4, 8.0), n <= ns ? "," : "");
+    sc[n + 1][0] = log(dcm / dc1);
+    sc[n + 1][1] = log(Fsm / 8.0);
+    sc[n + 1][2] = ke_of(lr);
+    sc[n + 1][3] = ln_ratio(lr, DC_GW_LOADING, -1e4, 8.0);
   }
+  for (int c = 0; c < 4; c++)   /* the ghost below RHO_MIN */
+    sc[ns + 2][c] = 4.0 * sc[ns + 1][c] - 6.0 * sc[ns][c] + 4.0 * sc[ns - 1][c] - sc[ns - 2][c];
+  for (int n = 0; n < ns + 3; n++)
+    printf("{%.17g,%.17g,%.17g,%.17g}%s\n", sc[n][0], sc[n][1], sc[n][2], sc[n][3], n + 1 < ns + 3 ? "," : "");
   printf("};\n");
-  print_table("dc_gwae_load", ne[0], t[0]);
-  print_table("dc_gwae_unload", ne[1], t[1]);
+  print_table("dc_gwae_load", ne[0], nr[0], t[0]);
+  print_table("dc_gwae_unload", ne[1], nr[1], t[1]);
   return 0;
 }

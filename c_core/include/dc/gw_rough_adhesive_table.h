@@ -223,33 +223,58 @@ typedef struct {
    elliptic summits' Hertz closed form over the matched circle's, and r
    tabulated as ln r in (ln rho, xi(x), eta) by
    tests/reference/gen_gw_rough_adhesive_elliptic.c from the exact law
-   (dc_gw_rough_adhesive with dc_jkr_geometry summits): Catmull-Rom in
-   each coordinate (C1 in x), ln rho on [ln RHO_MIN, 0] (NR cells), xi =
-   x for x >= -6 and -6 - 6 LAMBDA ln(1 + ln(x/-6)/LAMBDA) below (C1;
-   nodes 1/XI_PER_UNIT apart on [XI_LO, XI_HI], x from -1.36e4 to 8; 1/2
-   apart left 2.1e-4 next to the summits' kink at small rho), eta rows 1/4
-   apart loading, 1/8 unloading (the kink moves with eta; the circular
-   table's eta clamping applies). The scales (ln(delta_c /
-   delta_c,circle(R_major)), ln(F_s/8 w R_major), k_e, ln r_oo) in ln rho
-   at 32 nodes per cell. Beyond the grid: r held at x > 8 (force < 1e-15
+   (dc_gw_rough_adhesive with dc_jkr_geometry summits): Catmull-Rom in xi
+   and eta (C1 in x); in ln rho cubic Hermite with three-point slopes
+   (Catmull-Rom where cells are even), NR1 cells on [ln 1e-4, 0] and NR2
+   per branch on [ln RHO_MIN, ln 1e-4], RHO_MIN = 1e-6 the law's limit
+   (DC_JKR_RATIO_MIN; the ghost node below it cubic from the last four).
+   The ln rho interpolation alone below 1e-4 (against the law at three
+   points per cell, every xi node, eta every 1/2): with cells 1, 1.2, 1.5,
+   2 times those above, loading 1.3e-5, -, 3.7e-5, 7.2e-5; unloading
+   2.7e-5, 4.8e-5, 9.6e-5, 2.2e-4 (near the summits' kink, tau < 0.2;
+   elsewhere 1.3e-5, 2.0e-5, 3.6e-5, -), hence NR2 8 and 10 (a straight
+   extension, 12 and 12, costs 46k floats more). xi = x for x >= -6 and
+   -6 - 6 LAMBDA ln(1 + ln(x/-6)/LAMBDA) below (C1; nodes 1/XI_PER_UNIT
+   apart on [XI_LO, XI_HI], x from -1.36e4 to 8; 1/2 apart left 2.1e-4
+   next to the summits' kink at small rho), eta rows 1/4 apart loading,
+   1/8 unloading (the kink moves with eta; the circular table's eta
+   clamping applies). The scales (ln(delta_c / delta_c,circle(R_major)),
+   ln(F_s/8 w R_major), k_e, ln r_oo) at 32 nodes per cell of ln(1e4)/NR1
+   on [ln RHO_MIN, 0]. Beyond the grid: r held at x > 8 (force < 1e-15
    n_asp w R); below x_lo = x(XI_LO) every summit is pressed and the
    kink-free ratio G_ell/G = r_oo + (its value at x_lo - r_oo)
    (x_lo/x)^3/4, r_oo that of one summit's adhesive parts at infinite
    compression (whose d^-3/4 tail this is; the kink term decays as d^-1/2
-   and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN (the
-   caller warns: the correction keeps growing below: r ~ 1.8 at 1e-3,
-   4.3 at 1e-4, 12 at 1e-5).
-   Error against the exact law (tests/unit/test_gw_rough_adhesive_elliptic.c,
-   2400 random points in physical units, rho 1e-4 to 1, tau over the
-   table): relative, where |F| >= 1e-6 n_asp 8 w R_major, loading 3.9e-5,
-   unloading 9.3e-5 (5.3e-5 at rho >= 0.01; the worst near the summits'
-   kink, x ~ -D, at small rho); dF/d delta 6.8e-5 and 5.6e-4 (Catmull-Rom
-   slopes; kn is the exact derivative of the interpolated F); beyond x_lo
-   8.0e-5 (below 1e-8 of the whole force); the matched scales within
-   5e-10 of dc_jkr_geometry. 468k floats. Cost: ~205 ns per set-up and
-   step (the unit test), against ~30 us for the exact law. */
-#define DC_GWAE_RHO_MIN 1e-4
-#define DC_GWAE_NR 24
+   and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN: the
+   caller warns; at a fixed overlap the exact force falls 3.4 to 4.3 times
+   per decade of rho near 1e-6, so the clamp overestimates it (r_oo, the
+   correction, is 1.8 at 1e-3, 4.4 at 1e-4, 12 at 1e-5, 35 at 1e-6).
+   Error against the exact law, relative where |F| >= 1e-6 n_asp 8 w
+   R_major, at the points of tests/unit/test_gw_rough_adhesive_elliptic.c
+   (physical units, tau over the table, x uniform in [-8, 8] or
+   log-uniform in [-400, -6]), 1e5 per branch and range of rho (the test's
+   2400 at rho >= 1e-4 found 3.9e-5, 9.3e-5, 8.0e-5 for the first three):
+   - rho 1e-4 to 1: loading 5.8e-5, unloading 2.4e-4 (1.0e-4 at rho >=
+     0.01; the worst at tau < 0.02 and x < -D, nodes 50 to 90 apart in
+     x), beyond x_lo 2.1e-4 (~1e-8 of the whole force); dF/d delta 7.2e-4
+     and 1.3e-3 (Catmull-Rom slopes; kn is the exact derivative of the
+     interpolated F); absolute below 2.7e-11 n_asp 8 w R_major;
+   - rho 1e-6 to 1e-4: loading 8.8e-5, beyond x_lo 2.9e-4; unloading
+     4.8e-4 at rho >= 1e-5, 1.9e-3 below (worst at rho 1.2e-6, tau 0.012,
+     x -77), dF/d delta 5.8e-4 and 3.5e-3, absolute 4.6e-10. Not the ln
+     rho grid (its cells at 1.0 times give the same) but x: at small rho
+     ln r has features that nodes 1/4 apart in xi miss, near x ~ 1 (6.7e-4
+     at rho 1e-6, tau 0.011; 2e-4 at tau 0.2) and at tau < 0.05 where it
+     falls from 3.1 to 1.8 over x ~ -0.9 D to -0.4 D (1e-3, nodes 10 to
+     20 apart in x; 1/8 apart in xi still leave 1.1e-4).
+   The matched scales within 5.7e-10 of dc_jkr_geometry. 629k floats.
+   Cost: ~210 ns per set-up and step (the unit test), against ~30 us for
+   the exact law. */
+#define DC_GWAE_RHO_MIN 1e-6             /* the exact law's DC_JKR_RATIO_MIN */
+#define DC_GWAE_NR1 24                   /* ln rho cells on [ln 1e-4, 0] */
+#define DC_GWAE_NR2_L 8                  /* on [ln RHO_MIN, ln 1e-4], loading */
+#define DC_GWAE_NR2_U 10                 /* and unloading */
+#define DC_GWAE_NRS 36                   /* scale cells on [ln RHO_MIN, 0] */
 #define DC_GWAE_LAMBDA 1.0
 #define DC_GWAE_XI_LO (-19.0)
 #define DC_GWAE_XI_HI 8.0
@@ -260,6 +285,14 @@ typedef struct {
 #define DC_GWAE_NETA_L 50               /* eta cells on [ETA_LO, 8] */
 #define DC_GWAE_NETA_U 100
 #define DC_GWAE_SCALE_PER_CELL 32
+
+/* -ln rho at node i of a branch's ln rho grid (n2 its NR2; i = -1 and
+   NR1 + n2 + 1 the ghosts) */
+static inline double dc_gwae_L_node(int i, int n2)
+{
+  const double L1 = 9.210340371976184;   /* ln 1e4 */
+  return i <= DC_GWAE_NR1 ? i * (L1 / DC_GWAE_NR1) : L1 + (i - DC_GWAE_NR1) * (4.605170185988092 / n2);
+}
 
 /* xi(x) of the correction grid and dxi/dx */
 static inline double dc_gwae_xi(double x, double *dxi)
@@ -279,9 +312,9 @@ static inline double dc_gwae_x_of_xi(double xi)
 /* The correction's cell for one contact: ln rho and eta weights. */
 typedef struct {
   int on;           /* 0: circular summits, no correction */
-  int i;            /* ln rho cell */
+  int i[2];         /* ln rho cell per branch */
   int j[2];         /* eta cell per branch */
-  double wr[4];     /* Catmull-Rom weights in ln rho */
+  double wr[2][4];  /* cubic weights in ln rho, per branch */
   double we[2][4];  /* in eta, per branch */
   double ke;        /* k_e */
   double lr_inf;    /* ln r_oo */
