@@ -38,6 +38,7 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #include "error.h"
 #include "global_properties.h"
 #include "neighbor.h"
+#include "warn_once.h"
 #include "dc/contract.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive_table.h"
@@ -55,8 +56,7 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 {
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), maxRadiusFactor(100.0),
-    warnedRatio(false), warnedMesh(false)
+    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), maxRadiusFactor(100.0)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
@@ -129,8 +129,7 @@ public:
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (sidata.is_wall && sidata.mesh && !warnedMesh) {
-        warnedMesh = true;
+      if (sidata.is_wall && sidata.mesh && !warnedBefore(DC_WARN_GWA_MESH)) {
         error->warning(FLERR, "Cohesion model gw_adhesion: superquadrics on a mesh wall: LIGGGHTS measures no gap "
                        "to a mesh for superquadrics, so their summits pull only while the surfaces touch, not "
                        "before touch or after they part (primitive walls and pairs have the whole law); warned once");
@@ -191,8 +190,7 @@ private:
                dc_status_str(si));
       error->one(FLERR, msg);
     }
-    if (!warnedRatio && R_minor < DC_GWAE_RHO_MIN * R_major) {
-      warnedRatio = true;
+    if (R_minor < DC_GWAE_RHO_MIN * R_major && !warnedBefore(DC_WARN_GWA_RATIO)) {
       char msg[320];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: atoms %d and %d touch with relative radii %g and %g, a "
                "ratio below %g: the elliptic summits are taken at that ratio, which overestimates the adhesive "
@@ -301,7 +299,6 @@ private:
 
   int history_offset, contact_offset, ntypes;
   double maxRadiusFactor;
-  bool warnedRatio, warnedMesh;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;
   SuperquadricGap gap;
