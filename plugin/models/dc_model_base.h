@@ -378,9 +378,14 @@ protected:
      bodies' curvature radii: a warning (once per process for the pair style
      and every wall together, naming the atoms) when a > R_minor / 2
      (Fessler & Ollerton's limit, quoted in the review), a2 = a^2. */
-  void checkHertzRange(const SurfacesIntersectData &sidata, double a2, double R_minor)
+  __attribute__((always_inline)) inline void checkHertzRange(const SurfacesIntersectData &sidata, double a2,
+                                                             double R_minor)
   {
-    if (a2 <= 0.25 * R_minor * R_minor || warnedBefore(DC_WARN_HERTZ_RANGE)) return;
+    if (a2 > 0.25 * R_minor * R_minor) warnHertzRange(sidata, a2, R_minor);
+  }
+  __attribute__((noinline)) void warnHertzRange(const SurfacesIntersectData &sidata, double a2, double R_minor)
+  {
+    if (warnedBefore(DC_WARN_HERTZ_RANGE)) return;
     char msg[320];
     snprintf(msg, sizeof msg, "Normal model %s: the contact of atom %d with %s %d has a semi-axis %g m above half "
              "its smaller relative curvature radius (%g m / 2), where Hertz theory no longer holds (overlap %g m; "
