@@ -42,23 +42,12 @@ static inline int cr_cell(double u, int n, double *w)
   return k;
 }
 
-/* cell and weights of the nodes i-1 .. i+2 at -ln rho = L on a branch's ln
-   rho grid (n2 its NR2): cubic Hermite with three-point slopes, exact for
-   quadratics; Catmull-Rom where the cells are even */
-static inline int ln_rho_cell(double L, int n2, double *w)
+/* weights of the nodes l0 .. l3 at t in [0, 1] of the cell [l1, l2]: cubic
+   Hermite with three-point slopes, exact for quadratics (Catmull-Rom where
+   the cells are even) */
+static void hermite3_weights(double l0, double l1, double l2, double l3, double t, double *w)
 {
-  const double h1 = dc_gwae_L_node(1, n2), L1 = dc_gwae_L_node(DC_GWAE_NR1, n2);
-  const double h2 = dc_gwae_L_node(DC_GWAE_NR1 + 1, n2) - L1;
-  const double u = L < L1 ? L / h1 : DC_GWAE_NR1 + (L - L1) / h2;
-  int i = (int)u;
-  if (i > DC_GWAE_NR1 + n2 - 1) i = DC_GWAE_NR1 + n2 - 1;
-  const double t = u - i;
-  if (i + 1 < DC_GWAE_NR1 || i > DC_GWAE_NR1) {
-    cr_weights(t, w);
-    return i;
-  }
-  const double l0 = dc_gwae_L_node(i - 1, n2), l1 = dc_gwae_L_node(i, n2), l2 = dc_gwae_L_node(i + 1, n2),
-               l3 = dc_gwae_L_node(i + 2, n2), h = l2 - l1;
+  const double h = l2 - l1;
   const double t2 = t * t, t3 = t2 * t;
   const double h00 = 2.0 * t3 - 3.0 * t2 + 1.0, h10 = t3 - 2.0 * t2 + t, h01 = 3.0 * t2 - 2.0 * t3, h11 = t3 - t2;
   /* h times the slope at l1 (from l0, l1, l2) and at l2 (from l1, l2, l3) */
@@ -71,7 +60,42 @@ static inline int ln_rho_cell(double L, int n2, double *w)
   w[1] = h00 + h10 * p1 + h11 * q1;
   w[2] = h01 + h10 * p2 + h11 * q2;
   w[3] = h11 * q3;
+}
+
+/* cell and weights of the nodes i-1 .. i+2 at -ln rho = L on a branch's ln
+   rho grid (n2 its NR2) */
+static inline int ln_rho_cell(double L, int n2, double *w)
+{
+  const double h1 = dc_gwae_L_node(1, n2), L1 = dc_gwae_L_node(DC_GWAE_NR1, n2);
+  const double h2 = dc_gwae_L_node(DC_GWAE_NR1 + 1, n2) - L1;
+  const double u = L < L1 ? L / h1 : DC_GWAE_NR1 + (L - L1) / h2;
+  int i = (int)u;
+  if (i > DC_GWAE_NR1 + n2 - 1) i = DC_GWAE_NR1 + n2 - 1;
+  const double t = u - i;
+  if (i + 1 < DC_GWAE_NR1 || i > DC_GWAE_NR1)
+    cr_weights(t, w);
+  else
+    hermite3_weights(dc_gwae_L_node(i - 1, n2), dc_gwae_L_node(i, n2), dc_gwae_L_node(i + 1, n2),
+                     dc_gwae_L_node(i + 2, n2), t, w);
   return i;
+}
+
+/* cell and weights of the unloading rows at eta (in the table's range) */
+static inline int eta_cell_u(double eta, double *w)
+{
+  const int n1 = (int)((DC_GWAE_ETA_MID_U - DC_GWA_TABLE_ETA_LO) * DC_GWAE_ETA_PER_UNIT_U + 0.5);
+  const double u = eta < DC_GWAE_ETA_MID_U ? (eta - DC_GWA_TABLE_ETA_LO) * DC_GWAE_ETA_PER_UNIT_U
+                                           : n1 + (eta - DC_GWAE_ETA_MID_U) * (DC_GWAE_ETA_PER_UNIT_U / 2);
+  int j = (int)u;
+  if (j < 0) j = 0;
+  if (j > DC_GWAE_NETA_U - 1) j = DC_GWAE_NETA_U - 1;
+  const double t = u - j;
+  if (j + 1 < n1 || j > n1)
+    cr_weights(t, w);
+  else
+    hermite3_weights(dc_gwae_eta_node_u(j - 1), dc_gwae_eta_node_u(j), dc_gwae_eta_node_u(j + 1),
+                     dc_gwae_eta_node_u(j + 2), t, w);
+  return j;
 }
 
 int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
@@ -112,7 +136,9 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
     dc_gwa_table_eta_cell(p->ln_sigma_dc - l3 - s[0], &q.cell);
     const double eta = q.cell.eta, lo = DC_GWA_TABLE_ETA_LO;
     e->j[0] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_NETA_L, e->we[0]);
-    e->j[1] = cr_cell((eta - lo) * DC_GWAE_ETA_PER_UNIT_U, DC_GWAE_NETA_U, e->we[1]);
+    e->j[1] = eta_cell_u(eta, e->we[1]);
+    /* |ub| / tau is D unless eta was clamped */
+    e->zs = eta == p->ln_sigma_dc - l3 - s[0] ? 1.0 / (q.D + DC_GWAE_Z_D0) : dc_gwae_z_scale(eta);
     if (!(isfinite(q.Fs) && isfinite(q.db) && isfinite(q.reach) && isfinite(eta))) return DC_ERANGE;
   }
   *r = q;
@@ -125,10 +151,19 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double dxi, xi = dc_gwae_xi(x, &dxi);
   const int deep = xi < DC_GWAE_XI_LO;
   if (deep) { xi = DC_GWAE_XI_LO; dxi = 0.0; }
-  if (xi > DC_GWAE_XI_HI) { xi = DC_GWAE_XI_HI; dxi = 0.0; }   /* r held beyond the grid */
+  double z = xi, zlo = DC_GWAE_XI_LO;
+  int nz = DC_GWAE_NXI;
+  if (b == DC_GW_UNLOADING) {
+    zlo -= DC_GWAE_Z_A + DC_GWAE_Z_B;
+    nz = DC_GWAE_NZ_U;
+    if (deep) z = zlo;
+    else if (xi <= DC_GWAE_XI_HI) z = dc_gwae_z(x, e->zs, &dxi);
+    else { z = dc_gwae_z(DC_GWAE_XI_HI, e->zs, &dxi); dxi = 0.0; }   /* r held at x > 8 */
+  }
+  if (z > DC_GWAE_XI_HI) { z = DC_GWAE_XI_HI; dxi = 0.0; }   /* r held beyond the grid */
   double wx[4], dx[4];
-  const double ux = (xi - DC_GWAE_XI_LO) * DC_GWAE_XI_PER_UNIT;
-  const int k = cr_cell(ux, DC_GWAE_NXI, wx);
+  const double ux = (z - zlo) * DC_GWAE_XI_PER_UNIT;
+  const int k = cr_cell(ux, nz, wx);
   cr_slopes(ux - k, dx);
   /* the 4 x 4 (eta, ln rho) nodes mixed, at the 4 xi nodes */
   double a[4] = {0.0, 0.0, 0.0, 0.0};

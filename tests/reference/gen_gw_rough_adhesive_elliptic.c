@@ -12,7 +12,10 @@
 
    stored as ln r in float (7 digits, far below the interpolation error).
    Nodes in ln rho at dc_gwae_L_node (NR1 cells to 1e-4, NR2 per branch
-   below). Ghost nodes (one beyond each end) from the law too, except in
+   below); in x at xi nodes (loading) or at z nodes of dc_gwae_z, which
+   follow x/D where D is large (unloading; x found by bisection); eta rows
+   1/4 apart (loading) or at dc_gwae_eta_node_u (unloading: 1/8 apart up
+   to eta = 2, 1/4 above). Ghost nodes (one beyond each end) from the law too, except in
    eta (the circular table is clamped beyond its rows), at x > 8 (the
    circular table's continuation), there extrapolated through three nodes
    (exact for quadratics), and below RHO_MIN (the law's smallest ratio),
@@ -20,7 +23,7 @@
    The scales: ln(delta_c,m / delta_c(R_major)), ln(F_s,m / 8 w R_major),
    k_e, ln r_oo at SCALE_PER_CELL nodes per cell of ln(1e4)/NR1 on
    [ln RHO_MIN, 0] (the ghost below RHO_MIN through four nodes).
-   About 16 s on 2 cores with OpenMP.
+   About 20 s on 2 cores with OpenMP.
    Regenerate (from the repository root, library built in B):
      cc -O2 -fopenmp -std=gnu11 -Wall -Wextra -Ic_core/include tests/reference/gen_gw_rough_adhesive_elliptic.c \
         B/c_core/libdemcontact.a -lgsl -lgslcblas -lm -o /tmp/gen_gwae && \
@@ -37,7 +40,6 @@
 
 #define UB (-0.375 * 4.60115111447049)
 #define CH 0.15005271935951767
-#define NXN (DC_GWAE_NXI + 3)   /* nodes with ghosts */
 
 static void fail(const char *what, double lr, int b, double x, double eta)
 {
@@ -86,18 +88,37 @@ static double ln_ratio(double lr, int b, double x, double eta)
   return log(r);
 }
 
+/* x at node k of branch b's grid in row eta (unloading: z(x) = the node's
+   z, by bisection; z <= xi and z >= xi - Z_A - Z_B - 1 bracket it) */
+static double x_node(int b, int k, double eta)
+{
+  const double zk = b == DC_GW_UNLOADING ? DC_GWAE_XI_LO - DC_GWAE_Z_A - DC_GWAE_Z_B + (double)k / DC_GWAE_XI_PER_UNIT
+                                         : DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT;
+  if (b != DC_GW_UNLOADING) return dc_gwae_x_of_xi(zk);
+  const double zs = dc_gwae_z_scale(eta);
+  double lo = dc_gwae_x_of_xi(zk), hi = dc_gwae_x_of_xi(zk + DC_GWAE_Z_A + DC_GWAE_Z_B + 1.0), dz;
+  if (!(dc_gwae_z(lo, zs, &dz) <= zk && dc_gwae_z(hi, zs, &dz) >= zk)) fail("z node not bracketed", 0, b, zk, eta);
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * fabs(lo); it++) {
+    const double m = 0.5 * (lo + hi);
+    if (dc_gwae_z(m, zs, &dz) < zk) lo = m; else hi = m;
+  }
+  return 0.5 * (lo + hi);
+}
+
 static void branch_table(int b, int ne, int per_unit, int n2, float *t)
 {
-  const int nr = DC_GWAE_NR1 + n2, NRN = nr + 3;
+  const int nr = DC_GWAE_NR1 + n2, NRN = nr + 3, nx = b == DC_GW_UNLOADING ? DC_GWAE_NZ_U : DC_GWAE_NXI,
+            NXN = nx + 3;
 #define AT(j, i, k) t[((size_t)(j) * NRN + (i)) * NXN + (k)]
   if (fabs(dc_gwae_L_node(nr, n2) + log(DC_GWAE_RHO_MIN)) > 1e-12) fail("the ln rho grid misses RHO_MIN", 0, b, 0, 0);
 #pragma omp parallel for schedule(dynamic)
   for (int j = 0; j <= ne; j++)
     for (int i = -1; i <= nr; i++)
-      for (int k = -1; k <= DC_GWAE_NXI; k++)
-        AT(j + 1, i + 1, k + 1) =
-            (float)ln_ratio(-dc_gwae_L_node(i, n2), b, dc_gwae_x_of_xi(DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT),
-                            DC_GWA_TABLE_ETA_LO + (double)j / per_unit);
+      for (int k = -1; k <= nx; k++) {
+        const double eta =
+            b == DC_GW_UNLOADING ? dc_gwae_eta_node_u(j) : DC_GWA_TABLE_ETA_LO + (double)j / per_unit;
+        AT(j + 1, i + 1, k + 1) = (float)ln_ratio(-dc_gwae_L_node(i, n2), b, x_node(b, k, eta), eta);
+      }
   for (int j = 1; j <= ne + 1; j++)
     for (int i = 0; i < NRN - 1; i++) {
       float *r = &AT(j, i, 0);
@@ -117,7 +138,7 @@ static void branch_table(int b, int ne, int per_unit, int n2, float *t)
 #undef AT
 }
 
-static void print_table(const char *name, int ne, int nr, const float *t)
+static void print_table(const char *name, int ne, int nr, int NXN, const float *t)
 {
   const int NRN = nr + 3;
   printf("static const float %s[%d][%d][%d] = {\n", name, ne + 3, NRN, NXN);
@@ -137,9 +158,10 @@ int main(void)
 {
   const int ne[2] = {DC_GWAE_NETA_L, DC_GWAE_NETA_U}, pu[2] = {DC_GWAE_ETA_PER_UNIT_L, DC_GWAE_ETA_PER_UNIT_U};
   const int n2[2] = {DC_GWAE_NR2_L, DC_GWAE_NR2_U}, nr[2] = {DC_GWAE_NR1 + n2[0], DC_GWAE_NR1 + n2[1]};
+  const int nx[2] = {DC_GWAE_NXI, DC_GWAE_NZ_U};
   float *t[2];
   for (int b = 0; b < 2; b++) {
-    t[b] = malloc(sizeof(float) * (ne[b] + 3) * (nr[b] + 3) * NXN);
+    t[b] = malloc(sizeof(float) * (ne[b] + 3) * (nr[b] + 3) * (nx[b] + 3));
     if (!t[b]) return 1;
     branch_table(b, ne[b], pu[b], n2[b], t[b]);
   }
@@ -147,7 +169,7 @@ int main(void)
   const double hs = dc_gwae_L_node(1, 1) / DC_GWAE_SCALE_PER_CELL;
   if (fabs(ns * hs + log(DC_GWAE_RHO_MIN)) > 1e-12) fail("the scales miss RHO_MIN", 0, 0, 0, 0);
   printf("/* Generated by tests/reference/gen_gw_rough_adhesive_elliptic.c: do not edit.\n"
-         "   ln r per branch [eta node][ln rho node][xi node], each with one ghost\n"
+         "   ln r per branch [eta node][ln rho node][xi node (unloading: z)], each with one ghost\n"
          "   node first; the scales per ln rho node (SCALE_PER_CELL per cell of\n"
          "   ln(1e4)/NR1, one ghost first): ln(delta_c,m/delta_c(R_major)), ln(F_s,m/8 w R_major), k_e,\n"
          "   ln r_oo; x_lo = x(XI_LO)\n"
@@ -173,7 +195,7 @@ int main(void)
   for (int n = 0; n < ns + 3; n++)
     printf("{%.17g,%.17g,%.17g,%.17g}%s\n", sc[n][0], sc[n][1], sc[n][2], sc[n][3], n + 1 < ns + 3 ? "," : "");
   printf("};\n");
-  print_table("dc_gwae_load", ne[0], nr[0], t[0]);
-  print_table("dc_gwae_unload", ne[1], nr[1], t[1]);
+  print_table("dc_gwae_load", ne[0], nr[0], nx[0] + 3, t[0]);
+  print_table("dc_gwae_unload", ne[1], nr[1], nx[1] + 3, t[1]);
   return 0;
 }
