@@ -125,9 +125,11 @@ for r in $(seq "$reps"); do
       [ "$which" = base ] && { exe=$base; key="base_$name"; }
       d="$work/${key}_$r"; mkdir -p "$d"; cd "$d"
       if [ "$ranks" -gt 1 ]; then
-        mpirun ${DC_BENCH_MPIRUN:-} -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+        mpirun ${DC_BENCH_MPIRUN:-} -np "$ranks" "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1 \
+          || { echo "bench: $key ($exe) failed, see below" >&2; tail -20 screen.txt >&2; exit 1; }
       else
-        "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1
+        "$exe" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1 \
+          || { echo "bench: $key ($exe) failed, see below" >&2; tail -20 screen.txt >&2; exit 1; }
       fi
       t=$(awk '/^Loop time of/ {print $4}' log)
       best[$key]=$(python3 -c "print(min(float('$t'), float('${best[$key]:-1e300}')))")
