@@ -27,6 +27,7 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #ifndef COHESION_MODEL_GW_ADHESION_H_
 #define COHESION_MODEL_GW_ADHESION_H_
 
+#include <cstdarg>
 #include <cstdio>
 #include <cstring>
 #include <vector>
@@ -184,12 +185,7 @@ private:
     curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_adhesion");
     dc_gwa_table_radius rad;
     const int si = dc_gwa_table_radius_init_elliptic(&p, R_major, R_minor, &rad);
-    if (si != DC_OK) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: relative radii %g, %g: %s", R_major, R_minor,
-               dc_status_str(si));
-      error->one(FLERR, msg);
-    }
+    if (si != DC_OK) fail("relative radii %g, %g: %s", R_major, R_minor, dc_status_str(si));
     if (R_minor < DC_GWAE_RHO_MIN * R_major && !warnedBefore(DC_WARN_GWA_RATIO)) {
       char msg[320];
       snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: atoms %d and %d touch with relative radii %g and %g, a "
@@ -233,22 +229,14 @@ private:
       memcpy(&copy, con, sizeof copy);
       con = &copy;
     }
-    if (con->R != R) setUp(p, R, con);
+    if (con->R != R) {
+      const int st = dc_gwa_table_contact_init(&p, R, con);
+      if (st != DC_OK) fail("radius %g: %s", R, dc_status_str(st));
+    }
     if (h[0] != 0.0) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
     dc_gwa_table_out o;
     const int st = dc_gwa_table_step_contact(&p, con, delta, h, &o);
     return finish(sidata, st, delta, R, h, o, i_forces, j_forces);
-  }
-
-  /* A contact's record for radius R (a new contact, or another in its slot). */
-  __attribute__((noinline)) void setUp(const dc_gwa_table_pair &p, double R, dc_gwa_table_contact *con)
-  {
-    const int st = dc_gwa_table_contact_init(&p, R, con);
-    if (st != DC_OK) {
-      char msg[256];
-      snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: radius %g: %s", R, dc_status_str(st));
-      error->one(FLERR, msg);
-    }
   }
 
   /* The contact's history, or (a pass that must not change it) a copy in scratch. */
@@ -264,14 +252,9 @@ private:
   void checkReach(const SurfacesIntersectData &sidata, double reach)
   {
     const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
-    if (neighbor->contactDistanceFactor * r0 < r0 + reach) reachError(reach, r0);
-  }
-  __attribute__((noinline)) void reachError(double reach, double r0)
-  {
-    char msg[256];
-    snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: attached summits pull up to %g m apart: set "
-             "neigh_modify contact_distance_factor >= %.12g", reach, 1.0 + reach / r0);
-    error->one(FLERR, msg);
+    if (neighbor->contactDistanceFactor * r0 < r0 + reach)
+      fail("attached summits pull up to %g m apart: set neigh_modify contact_distance_factor >= %.12g", reach,
+           1.0 + reach / r0);
   }
 
   /* After the step (status st, history h, output o): the contact flag and
@@ -280,7 +263,7 @@ private:
                                                     const double *h, const dc_gwa_table_out &o, ForceData &i_forces,
                                                     ForceData &j_forces)
   {
-    if (st != DC_OK) stepError(st, delta, R);
+    if (st != DC_OK) fail("overlap %g, radius %g: %s", delta, R, dc_status_str(st));
     if (sidata.contact_flags) {
       if (h[0] != 0.0) *sidata.contact_flags |= CONTACT_COHESION_MODEL;
       else *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
@@ -290,10 +273,16 @@ private:
     return true;
   }
 
-  __attribute__((noinline)) void stepError(int st, double delta, double R)
+  /* Stops the run on this process: "Cohesion model gw_adhesion: " and the
+     message (out of line: the callers are on the hot path). */
+  __attribute__((noinline, format(printf, 2, 3))) void fail(const char *fmt, ...)
   {
-    char msg[256];
-    snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: overlap %g, radius %g: %s", delta, R, dc_status_str(st));
+    char what[256], msg[320];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(what, sizeof what, fmt, ap);
+    va_end(ap);
+    snprintf(msg, sizeof msg, "Cohesion model gw_adhesion: %s", what);
     error->one(FLERR, msg);
   }
 
