@@ -32,6 +32,8 @@ cases = [
     ("viscoelastic without viscoelasticTime", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history", settings="viscoelastic on"), "viscoelasticTime"),
     ("roughnessMu outside [1, 50]", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough_mu60")), "roughnessMu = 60 for types 1 and 1 is outside [1, 50]"),
     ("contact distance too small for the roughness", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough"), x0="0.00099"), "set neigh_modify contact_distance_factor >="),
+    # gw_rough's reach (3 sigma) is within contact distance 1.2, the attached summits' (D + 8 sigma) is not
+    ("contact distance too small for attached rough adhesive summits", "in.sphere_base", dict(ok, model="gw_rough tangential history cohesion gw_adhesion", props=props("props_rough_adhesive"), settings="gwElliptic on", x0="0.00099", cdf="1.2"), "Cohesion model gw_adhesion: attached summits pull up to 0.000566569 m apart: set neigh_modify contact_distance_factor >= 1.283"),
     ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
     ("limitForce on an adhesive model", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="limitForce on"), "Normal model jkr_elliptic: 'limitForce on' is not available"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
