@@ -9,9 +9,6 @@
 #include <math.h>
 #include "gw_rough_adhesive_elliptic_data.h"
 
-/* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 */
-#define DC_GWAE_UB (-0.375 * 4.60115111447049)
-
 /* Catmull-Rom weights of the nodes k-1 .. k+2 at t in [0, 1] of cell k */
 static inline void cr_weights(double t, double *w)
 {
