@@ -60,23 +60,31 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
   return DC_OK;
 }
 
-int dc_gw_bound_init(const dc_hertz_geom *g, double Estar, double n_asp, double sigma, dc_gw_bound *b)
+int dc_gw_bound_material(double Estar, double n_asp, double sigma, dc_gw_bound *b)
 {
   if (!(Estar > 0.0 && isfinite(Estar) && n_asp > 0.0 && isfinite(n_asp) && sigma > 0.0 && isfinite(sigma)))
     return DC_EDOM;
   dc_gw_bound q;
-  q.g = *g;
+  memset(&q, 0, sizeof q);
   q.Estar = Estar;
   q.n_asp = n_asp;
   q.sigma = sigma;
   q.inv_sigma = 1.0 / sigma;
-  /* dc_gw_rough_elliptic's products, in its order, without the F_n */
-  const double sRc = sqrt(g->Rc), ss = sqrt(sigma);
-  q.cF = n_asp * 4.0 / 3.0 * Estar * sRc * sigma * ss * g->gamma;
-  q.ck = n_asp * 2.0 * Estar * sRc * ss * g->gamma;
-  if (!(isnormal(q.inv_sigma) && isnormal(q.cF) && isnormal(q.ck))) return DC_ERANGE;
+  q.ss = sqrt(sigma);
+  q.kF = n_asp * 4.0 / 3.0 * Estar;   /* the leading products of dc_gw_rough_elliptic */
+  q.kk = n_asp * 2.0 * Estar;
+  if (!isnormal(q.inv_sigma)) return DC_ERANGE;
   *b = q;
   return DC_OK;
+}
+
+int dc_gw_bound_init(const dc_hertz_geom *g, double Estar, double n_asp, double sigma, dc_gw_bound *b)
+{
+  dc_gw_bound q;
+  int st = dc_gw_bound_material(Estar, n_asp, sigma, &q);
+  if (st == DC_OK) st = dc_gw_bound_bind(&q, g);
+  if (st == DC_OK) *b = q;
+  return st;
 }
 
 int dc_gw_rough_normal(const dc_hertz_geom *g, double Estar, double delta, double F, double kn, dc_contact *c)

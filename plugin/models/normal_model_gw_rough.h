@@ -114,6 +114,9 @@ public:
         for (int j = 1; j <= ntypes; j++)
           if (dc_gw_rough_check(n_asp[i][j], &err))
             stopParam(err, i, j);
+          else if (!gwPlastic && roughness[i][j] != 0.0 &&
+                   dc_gw_bound_material(Yeff[i][j], n_asp[i][j], roughness[i][j], &sphereBound[i * (ntypes + 1) + j]) != DC_OK)
+            sphereBound[i * (ntypes + 1) + j].sigma = 0.0;   /* 1/sigma leaves the doubles: the checked form */
       if (gwPlastic)
         plasticParams(registry, caller, plasticity, &dc_gw_plastic_default_params, &dc_gw_plastic_check, plastic);
       return;
@@ -193,11 +196,12 @@ private:
     } else if (gwElliptic && sigma != 0.0) {
       /* the circle's geometry and the closed form bound to it, kept per
          type pair while reff repeats */
-      dc_hertz_geom &c = sphereGeom[itype * (ntypes + 1) + jtype];
+      const int k = itype * (ntypes + 1) + jtype;
+      dc_hertz_geom &c = sphereGeom[k];
       if (c.R_major != reff) {
-        hertzGeometry(reff, reff, c);
-        if (!gwPlastic && dc_gw_bound_init(&c, Y, n_asp[itype][jtype], sigma, &sphereBound[itype * (ntypes + 1) + jtype]) != DC_OK)
-          sphereBound[itype * (ntypes + 1) + jtype].sigma = 0.0;   /* the products overflow: the checked form */
+        dc_hertz_geometry_circle(reff, &c);
+        /* products that leave the doubles make dc_gw_bound_force take the checked form */
+        if (sphereBound[k].sigma != 0.0) dc_gw_bound_bind(&sphereBound[k], &c);
       }
       g = c;
     }

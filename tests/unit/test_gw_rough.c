@@ -136,6 +136,32 @@ int main(void)
      -delta/sigma once, and F_3/2 near h = 3 amplifies an ulp of h ~13 fold */
   CHECK_ABS(worst_F, 0.0, 4e-15, "bound closed form: force");
   CHECK_ABS(worst_k, 0.0, 4e-15, "bound closed form: stiffness");
+  /* dc_gw_bound_bind: the bits of dc_gw_bound_init for each new geometry
+     (circles of random radius, as polydisperse spheres bind them, and
+     ellipses); where the products overflow, the checked form */
+  {
+    dc_gw_bound m, bi;
+    CHECK(dc_gw_bound_material(2.7e6, 3.0, 2.1e-5, &m) == DC_OK);
+    unsigned long long y = 7;
+    int differ = 0;
+    for (int k = 0; k < 2000; k++) {
+      const double R = pow(10.0, -6.0 + 6.0 * check_uniform(&y)), r = k % 2 ? 1.0 : check_uniform(&y);
+      if (k % 2) dc_hertz_geometry_circle(R, &g);
+      else CHECK(dc_hertz_geometry(R, R * fmax(r, 1e-3), &g) == DC_OK);
+      CHECK(dc_gw_bound_bind(&m, &g) == DC_OK && dc_gw_bound_init(&g, 2.7e6, 3.0, 2.1e-5, &bi) == DC_OK);
+      differ += memcmp(&m.g, &bi.g, sizeof g) != 0 || m.cF != bi.cF || m.ck != bi.ck || m.inv_sigma != bi.inv_sigma;
+    }
+    CHECK(differ == 0);
+    CHECK(dc_gw_bound_material(1e300, 1e300, 1e-7, &m) == DC_OK);
+    dc_hertz_geometry_circle(1.0, &g);
+    CHECK(dc_gw_bound_bind(&m, &g) == DC_ERANGE && m.cF == HUGE_VAL && m.ck == HUGE_VAL);
+    for (int k = 0; k <= 40; k++) {
+      const double d = 1e-7 * (-30.0 + 1.5 * k);
+      double F = 0.0, kn = 0.0;
+      const int sb = dc_gw_bound_force(&m, d, &F, &kn), se = dc_gw_rough_elliptic(&g, 1e300, 1e300, 1e-7, d, &rs);
+      CHECK(sb == se && (se != DC_OK || (F == rs.F && kn == rs.kn)));
+    }
+  }
   dc_gw_bound b0, b1;
   memset(&b0, 0, sizeof b0);
   b1 = b0;
@@ -144,6 +170,8 @@ int main(void)
   CHECK(dc_gw_bound_init(&g, NAN, 1.0, 1e-7, &b1) == DC_EDOM);
   CHECK(dc_gw_bound_init(&g, 1e9, 1.0, 1e-320, &b1) == DC_ERANGE);
   CHECK(dc_gw_bound_init(&g, 1e300, 1e300, 1e-7, &b1) == DC_ERANGE);
+  CHECK(memcmp(&b0, &b1, sizeof b0) == 0);
+  CHECK(dc_gw_bound_material(1e9, 1.0, 0.0, &b1) == DC_EDOM && dc_gw_bound_material(1e9, 1.0, 1e-320, &b1) == DC_ERANGE);
   CHECK(memcmp(&b0, &b1, sizeof b0) == 0);
   return check_summary("gw_rough");
 }

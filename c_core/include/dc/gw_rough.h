@@ -61,11 +61,16 @@ int dc_gw_rough_elliptic(const dc_hertz_geom *g, double Estar, double n_asp,
    its order, so F and kn differ from it only by F_3/2 and F_1/2 from
    dc_gw_F32_F12 (dc/gw_integrals.h: within 3e-16 relative) on
    -10 <= h < 3, the range of settled and approaching contacts; elsewhere
-   dc_gw_rough_elliptic itself. About a fifth of its instructions. */
+   dc_gw_rough_elliptic itself. About a fifth of its instructions. The
+   material part (dc_gw_bound_material) is formed once per pair; a contact
+   of another geometry binds it again (dc_gw_bound_bind: one square root). */
 typedef struct {
   dc_hertz_geom g;
   double Estar, n_asp, sigma;
   double inv_sigma;
+  double ss;   /* sigma^1/2 */
+  double kF;   /* n_asp 4/3 E* */
+  double kk;   /* n_asp 2 E* */
   double cF;   /* n_asp 4/3 E* Rc^1/2 sigma^3/2 gamma */
   double ck;   /* n_asp 2 E* Rc^1/2 sigma^1/2 gamma */
 } dc_gw_bound;
@@ -73,6 +78,29 @@ typedef struct {
 /* Domain of dc_gw_rough_elliptic with sigma > 0 (DC_EDOM); DC_ERANGE when
    1/sigma, cF or ck is not a finite normal number. *b untouched on error. */
 int dc_gw_bound_init(const dc_hertz_geom *g, double Estar, double n_asp, double sigma, dc_gw_bound *b);
+
+/* The material part of dc_gw_bound_init (no geometry bound yet: bind one
+   with dc_gw_bound_bind before dc_gw_bound_force). Its domain (DC_EDOM);
+   DC_ERANGE when 1/sigma is not a finite normal number. *b untouched on
+   error. */
+int dc_gw_bound_material(double Estar, double n_asp, double sigma, dc_gw_bound *b);
+
+/* Binds geometry g to b (from dc_gw_bound_material or dc_gw_bound_init):
+   the same bits as dc_gw_bound_init(g, ...) of b's material. DC_ERANGE
+   when cF or ck is not a finite normal number: then they are set to
+   +inf, so that dc_gw_bound_force takes dc_gw_rough_elliptic's checked
+   form at every overlap. g is stored either way. */
+static inline int dc_gw_bound_bind(dc_gw_bound *b, const dc_hertz_geom *g)
+{
+  /* dc_gw_rough_elliptic's products, in its order, without the F_n */
+  const double sRc = sqrt(g->Rc);
+  b->g = *g;
+  b->cF = b->kF * sRc * b->sigma * b->ss * g->gamma;
+  b->ck = b->kk * sRc * b->ss * g->gamma;
+  if (isnormal(b->cF) && isnormal(b->ck)) return DC_OK;
+  b->cF = b->ck = HUGE_VAL;
+  return DC_ERANGE;
+}
 
 /* F and kn = dF/d delta at overlap delta (finite, any sign): status and
    results as dc_gw_rough_elliptic (outputs untouched on error), except
