@@ -175,16 +175,30 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double lrx = (dx[0] * a[0] + dx[1] * a[1] + dx[2] * a[2] + dx[3] * a[3]) * DC_GWAE_XI_PER_UNIT * dxi;
   const double r = exp(lr);
   if (deep) {
-    /* below x_lo the kink-free ratio G_ell/G, at x_lo from the grid, tends
-       to r_oo like one summit's d^-3/4 (the kink term's d^-1/2 would
-       spoil the smoothed ratio's tail) */
-    double Gl, Gxl, Cl = 0.0, Cxl;
+    /* below x_lo the kink-free ratio R = G_ell/G (the kink term's d^-1/2
+       would spoil its tail) as two terms of one summit's series in d^-3/4,
+       s = (x_lo/x)^3/4: R = r_oo + A s + B s^2, A and B from R at x_lo and
+       its slope from the four nodes there; the grid's own slope
+       (Catmull-Rom, ~1 % off) joined C1 by D s^K (s - 1), which fades
+       within a third of the cell */
+    enum { K = 12 };
+    double Gl, Gxl, Cl = 0.0, Cxl = 0.0, dxl;
+    dc_gwae_xi(dc_gwae_x_lo, &dxl);   /* dz/dx there too (z's other terms below 1e-70) */
     if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &Cl, &Cxl);
     dc_gwa_table_reduced(b, dc_gwae_x_lo, eta, &Gl, &Gxl);
-    const double rl = (r * (Gl + Cl) - e->ke * Cl) / Gl, ri = exp(e->lr_inf);
-    const double c = (rl - ri) * pow(dc_gwae_x_lo / x, 0.75);
-    *Gx = *Gx * (ri + c) - 0.75 * c / x * *G;
-    *G *= ri + c;
+    /* d ln r/dx at x_lo: four-point (error ~h^3) and Catmull-Rom */
+    const double l4 = (-2.0 * a[0] - 3.0 * a[1] + 6.0 * a[2] - a[3]) * (DC_GWAE_XI_PER_UNIT / 6.0) * dxl;
+    const double lc = (a[2] - a[0]) * (0.5 * DC_GWAE_XI_PER_UNIT) * dxl;
+    const double Tl = Gl + Cl, Rl = (r * Tl - e->ke * Cl) / Gl, ri = exp(e->lr_inf);
+    const double Rx4 = (r * (l4 * Tl + Gxl + Cxl) - e->ke * Cxl - Rl * Gxl) / Gl;
+    /* dR/ds at s = 1 is -dR/dx x_lo/(3/4) */
+    const double B = -Rx4 * dc_gwae_x_lo / 0.75 - (Rl - ri), A = Rl - ri - B;
+    const double D = -r * Tl / Gl * (lc - l4) * dc_gwae_x_lo / 0.75;
+    const double s = pow(dc_gwae_x_lo / x, 0.75), s2 = s * s, s4 = s2 * s2, sK1 = s4 * s4 * s2 * s;   /* s^(K-1) */
+    const double R = ri + s * (A + B * s) + D * sK1 * s * (s - 1.0);
+    const double Rs = A + 2.0 * B * s + D * sK1 * ((K + 1) * s - K);
+    *Gx = *Gx * R - 0.75 * s / x * Rs * *G;
+    *G *= R;
     return;
   }
   const double C = kc[0], Cx = kc[1];
