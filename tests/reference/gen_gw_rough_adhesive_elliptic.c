@@ -143,16 +143,16 @@ static double ln_ratio(double lr, int b, double x, double eta)
 }
 
 /* x at node k of branch b's grid in row eta (unloading: z(x) = the node's
-   z, by bisection; z <= xi and z >= xi - Z_A - Z_B - 1 bracket it) */
+   z, by bisection; z <= xi and z >= xi - Z_OFF - 1 bracket it) */
 static double x_node(int b, int k, double eta)
 {
-  const double zk = b == DC_GW_UNLOADING ? DC_GWAE_XI_LO - DC_GWAE_Z_A - DC_GWAE_Z_B + (double)k / DC_GWAE_XI_PER_UNIT
+  const double zk = b == DC_GW_UNLOADING ? DC_GWAE_XI_LO - DC_GWAE_Z_OFF + (double)k / DC_GWAE_XI_PER_UNIT
                                          : DC_GWAE_XI_LO + (double)k / DC_GWAE_XI_PER_UNIT;
   if (b != DC_GW_UNLOADING) return dc_gwae_x_of_xi(zk);
   const double zs = dc_gwae_z_scale(eta);
-  double lo = dc_gwae_x_of_xi(zk), hi = dc_gwae_x_of_xi(zk + DC_GWAE_Z_A + DC_GWAE_Z_B + 1.0), dz;
+  double lo = dc_gwae_x_of_xi(zk), hi = dc_gwae_x_of_xi(zk + DC_GWAE_Z_OFF + 1.0), dz;
   if (!(dc_gwae_z(lo, zs, &dz) <= zk && dc_gwae_z(hi, zs, &dz) >= zk)) fail("z node not bracketed", 0, b, zk, eta);
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * fabs(lo); it++) {
+  for (int it = 0; it < 1000 && hi - lo > 1e-15 * fabs(lo); it++) {
     const double m = 0.5 * (lo + hi);
     if (dc_gwae_z(m, zs, &dz) < zk) lo = m; else hi = m;
   }
