@@ -77,7 +77,40 @@ static inline int ln_rho_cell(double L, int n2, double *w)
   return i;
 }
 
-/* cell and weights of the unloading rows at eta (in the table's range) */
+/* d/d eta at unloading row n as weights c[0..4] of the rows r0 .. r0+4:
+   five-point where rows n-2 .. n+2 are evenly spaced table rows, one-sided
+   ones on the table's rows at its ends (the ghost rows are extrapolated),
+   else three-point on the rows' own spacing (at the seam: the slopes of
+   hermite3_weights) */
+static void eta_slope_u(int n, int n1, double *c, int *r0)
+{
+  static const double end0[5] = {-22.0, 36.0, -18.0, 4.0, 0.0}, end1[5] = {-3.0, -10.0, 18.0, -6.0, 1.0};
+  for (int m = 0; m < 5; m++) c[m] = 0.0;
+  if (n <= 1 || n >= DC_GWAE_NETA_U - 1) {   /* 4 (5) points, error ~h^3 (h^4); sixths as twelfths */
+    const int lo = n <= 1;
+    const double h = dc_gwae_eta_node_u(lo ? 1 : n) - dc_gwae_eta_node_u(lo ? 0 : n - 1), q = 1.0 / (12.0 * h);
+    const double *e = (lo ? n == 0 : n == DC_GWAE_NETA_U) ? end0 : end1;
+    for (int m = 0; m < 5; m++) c[m] = lo ? e[m] * q : -e[4 - m] * q;
+    *r0 = lo ? 0 : DC_GWAE_NETA_U - 4;
+    return;
+  }
+  if ((n - 2 >= 0 && n + 2 <= n1) || (n - 2 >= n1 && n + 2 <= DC_GWAE_NETA_U)) {
+    const double h = dc_gwae_eta_node_u(n + 1) - dc_gwae_eta_node_u(n), q = 1.0 / (12.0 * h);
+    c[0] = q; c[1] = -8.0 * q; c[3] = 8.0 * q; c[4] = -q;
+    *r0 = n - 2;
+    return;
+  }
+  const double a = dc_gwae_eta_node_u(n) - dc_gwae_eta_node_u(n - 1), b = dc_gwae_eta_node_u(n + 1) - dc_gwae_eta_node_u(n);
+  c[0] = -b / (a * (a + b));
+  c[1] = (b - a) / (a * b);
+  c[2] = a / (b * (a + b));
+  *r0 = n - 1;
+}
+
+/* first row (array index: ghost row first) and weights of six unloading
+   rows at eta (in the table's range): cubic Hermite between rows j and j+1
+   with the slopes of eta_slope_u (error ~h^4 where five-point, against
+   Catmull-Rom's ~h^3; C1 in eta) */
 static inline int eta_cell_u(double eta, double *w)
 {
   const int n1 = (int)((DC_GWAE_ETA_MID_U - DC_GWA_TABLE_ETA_LO) * DC_GWAE_ETA_PER_UNIT_U + 0.5);
@@ -86,13 +119,35 @@ static inline int eta_cell_u(double eta, double *w)
   int j = (int)u;
   if (j < 0) j = 0;
   if (j > DC_GWAE_NETA_U - 1) j = DC_GWAE_NETA_U - 1;
-  const double t = u - j;
-  if (j + 1 < n1 || j > n1)
-    cr_weights(t, w);
-  else
-    hermite3_weights(dc_gwae_eta_node_u(j - 1), dc_gwae_eta_node_u(j), dc_gwae_eta_node_u(j + 1),
-                     dc_gwae_eta_node_u(j + 2), t, w);
-  return j;
+  const double t = u - j, t2 = t * t, t3 = t2 * t;
+  const double h00 = 2.0 * t3 - 3.0 * t2 + 1.0, h01 = 3.0 * t2 - 2.0 * t3;
+  if ((j >= 2 && j + 3 <= n1) || (j - 2 >= n1 && j + 3 <= DC_GWAE_NETA_U)) {
+    /* both slopes five-point: the weights of rows j-2 .. j+3 directly */
+    const double g10 = (t3 - 2.0 * t2 + t) * (1.0 / 12.0), g11 = (t3 - t2) * (1.0 / 12.0);
+    w[0] = g10;
+    w[1] = g11 - 8.0 * g10;
+    w[2] = h00 - 8.0 * g11;
+    w[3] = h01 + 8.0 * g10;
+    w[4] = 8.0 * g11 - g10;
+    w[5] = -g11;
+    return j - 1;
+  }
+  const double H = dc_gwae_eta_node_u(j + 1) - dc_gwae_eta_node_u(j);
+  const double h10 = (t3 - 2.0 * t2 + t) * H, h11 = (t3 - t2) * H;
+  /* rows base .. base+5, within the rows -1 .. NETA+1 stored */
+  const int base = j - 2 < -1 ? -1 : (j - 2 > DC_GWAE_NETA_U - 4 ? DC_GWAE_NETA_U - 4 : j - 2);
+  double c[5];
+  int r0;
+  for (int m = 0; m < 6; m++) w[m] = 0.0;
+  w[j - base] += h00;
+  w[j + 1 - base] += h01;
+  eta_slope_u(j, n1, c, &r0);
+  for (int m = 0; m < 5; m++)
+    if (c[m] != 0.0) w[r0 + m - base] += h10 * c[m];
+  eta_slope_u(j + 1, n1, c, &r0);
+  for (int m = 0; m < 5; m++)
+    if (c[m] != 0.0) w[r0 + m - base] += h11 * c[m];
+  return base + 1;
 }
 
 int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
@@ -151,7 +206,7 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double z = xi, zlo = DC_GWAE_XI_LO;
   int nz = DC_GWAE_NXI;
   if (b == DC_GW_UNLOADING) {
-    zlo -= DC_GWAE_Z_A + DC_GWAE_Z_B;
+    zlo -= DC_GWAE_Z_OFF;
     nz = DC_GWAE_NZ_U;
     if (deep) z = zlo;
     else if (xi <= DC_GWAE_XI_HI) z = dc_gwae_z(x, e->zs, &dxi);
@@ -162,9 +217,10 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   const double ux = (z - zlo) * DC_GWAE_XI_PER_UNIT;
   const int k = cr_cell(ux, nz, wx);
   cr_slopes(ux - k, dx);
-  /* the 4 x 4 (eta, ln rho) nodes mixed, at the 4 xi nodes */
+  /* the 4 (unloading 6) x 4 (eta, ln rho) nodes mixed, at the 4 xi nodes */
   double a[4] = {0.0, 0.0, 0.0, 0.0};
-  for (int jj = 0; jj < 4; jj++)
+  const int nj = b == DC_GW_UNLOADING ? 6 : 4;
+  for (int jj = 0; jj < nj; jj++)
     for (int ii = 0; ii < 4; ii++) {
       const double w = e->we[b][jj] * e->wr[b][ii];
       const float *row = b == DC_GW_UNLOADING ? dc_gwae_unload[e->j[1] + jj][e->i[1] + ii] + k
@@ -175,16 +231,30 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
   double lrx = (dx[0] * a[0] + dx[1] * a[1] + dx[2] * a[2] + dx[3] * a[3]) * DC_GWAE_XI_PER_UNIT * dxi;
   const double r = exp(lr);
   if (deep) {
-    /* below x_lo the kink-free ratio G_ell/G, at x_lo from the grid, tends
-       to r_oo like one summit's d^-3/4 (the kink term's d^-1/2 would
-       spoil the smoothed ratio's tail) */
-    double Gl, Gxl, Cl = 0.0, Cxl;
+    /* below x_lo the kink-free ratio R = G_ell/G (the kink term's d^-1/2
+       would spoil its tail) as two terms of one summit's series in d^-3/4,
+       s = (x_lo/x)^3/4: R = r_oo + A s + B s^2, A and B from R at x_lo and
+       its slope from the four nodes there; the grid's own slope
+       (Catmull-Rom, ~1 % off) joined C1 by D s^K (s - 1), which fades
+       within a third of the cell */
+    enum { K = 12 };
+    double Gl, Gxl, Cl = 0.0, Cxl = 0.0, dxl;
+    dc_gwae_xi(dc_gwae_x_lo, &dxl);   /* dz/dx there too (z's other terms below 1e-70) */
     if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &Cl, &Cxl);
     dc_gwa_table_reduced(b, dc_gwae_x_lo, eta, &Gl, &Gxl);
-    const double rl = (r * (Gl + Cl) - e->ke * Cl) / Gl, ri = exp(e->lr_inf);
-    const double c = (rl - ri) * pow(dc_gwae_x_lo / x, 0.75);
-    *Gx = *Gx * (ri + c) - 0.75 * c / x * *G;
-    *G *= ri + c;
+    /* d ln r/dx at x_lo: four-point (error ~h^3) and Catmull-Rom */
+    const double l4 = (-2.0 * a[0] - 3.0 * a[1] + 6.0 * a[2] - a[3]) * (DC_GWAE_XI_PER_UNIT / 6.0) * dxl;
+    const double lc = (a[2] - a[0]) * (0.5 * DC_GWAE_XI_PER_UNIT) * dxl;
+    const double Tl = Gl + Cl, Rl = (r * Tl - e->ke * Cl) / Gl, ri = exp(e->lr_inf);
+    const double Rx4 = (r * (l4 * Tl + Gxl + Cxl) - e->ke * Cxl - Rl * Gxl) / Gl;
+    /* dR/ds at s = 1 is -dR/dx x_lo/(3/4) */
+    const double B = -Rx4 * dc_gwae_x_lo / 0.75 - (Rl - ri), A = Rl - ri - B;
+    const double D = -r * Tl / Gl * (lc - l4) * dc_gwae_x_lo / 0.75;
+    const double s = pow(dc_gwae_x_lo / x, 0.75), s2 = s * s, s4 = s2 * s2, sK1 = s4 * s4 * s2 * s;   /* s^(K-1) */
+    const double R = ri + s * (A + B * s) + D * sK1 * s * (s - 1.0);
+    const double Rs = A + 2.0 * B * s + D * sK1 * ((K + 1) * s - K);
+    *Gx = *Gx * R - 0.75 * s / x * Rs * *G;
+    *G *= R;
     return;
   }
   const double C = kc[0], Cx = kc[1];

@@ -224,7 +224,8 @@ typedef struct {
    tabulated as ln r in (ln rho, xi(x), eta) (unloading: z(x, eta) for xi,
    below) by tests/reference/gen_gw_rough_adhesive_elliptic.c from the
    exact law (dc_gw_rough_adhesive with dc_jkr_geometry summits):
-   Catmull-Rom in xi (z) and eta (C1 in x); in ln rho cubic Hermite with three-point slopes
+   Catmull-Rom in xi (z) and eta (C1 in x; unloading: eta below); in ln
+   rho cubic Hermite with three-point slopes
    (Catmull-Rom where cells are even), NR1 cells on [ln 1e-4, 0] and NR2
    per branch on [ln RHO_MIN, ln 1e-4], RHO_MIN = 1e-6 the law's limit
    (DC_JKR_RATIO_MIN; the ghost node below it cubic from the last four).
@@ -245,21 +246,29 @@ typedef struct {
    tabulated against z(x, eta) of dc_gwae_z: xi made C3 at x = -6, minus
    Z_A = 12 units of a logistic step in c = -x/(D_t + 1) (D_t = |ub|/tau
    at the table's eta) around c = 0.7 (x/D ~ -0.7 at small tau: there rows
-   meet at the same x/D), plus Z_B = 2 units of one in x around 0.5 (the
-   end of the kink term's w at x = 1, where ln r bends sharply at small
-   tau); nodes 1/4 apart in z on [XI_LO - 14, XI_HI], x from the same x_lo
-   to 8 and at small tau beyond (those nodes only neighbours: r is held
-   at x > 8); eta rows 1/8 apart on [ETA_LO, 2] and 1/4 on [2, 8] (C1, three-
-   point slopes at the seam; rows 1/4 apart throughout left 2.7e-4 at rho
-   >= 1e-4 and tau < 0.14; above tau ~ 7 they give the same errors). The circular table's
-   eta clamping applies. The scales (ln(delta_c / delta_c,circle(R_major)),
+   meet at the same x/D), plus Z_B = Z_E = 3 units of ones in x around 1
+   and -2 (width 0.6: the ends of the kink term's w, a quintic step, where
+   the third derivative of ln r jumps, sharply at small tau and rho with
+   k_e up to 60; one step of 2 units around 0.5 left kn errors of 1.8e-3
+   at x ~ -1.9 and 1, rho < 4e-6); nodes 1/4 apart in z on [XI_LO -
+   Z_OFF, XI_HI] (Z_OFF = Z_A + Z_B + Z_E), x from the same x_lo to 8 and
+   at small tau beyond (those nodes only neighbours: r is held at x > 8);
+   eta rows 1/8 apart on [ETA_LO, 2] and 1/4 on [2, 8], cubic Hermite in
+   eta (C1) with five-point slopes (one-sided at the table's ends,
+   three-point at the seam; Catmull-Rom left 1.6e-4 at rho ~1e-6, tau ~
+   0.1, where ln r's third derivative in eta is ~5; rows 1/4 apart
+   throughout left 2.7e-4 at rho >= 1e-4 and tau < 0.14; above tau ~ 7
+   they give the same errors). The circular table's eta clamping applies. The scales (ln(delta_c / delta_c,circle(R_major)),
    ln(F_s/8 w R_major), k_e, ln r_oo) at 32 nodes per cell of ln(1e4)/NR1
    on [ln RHO_MIN, 0]. Beyond the grid: r held at x > 8 (force < 1e-15
    n_asp w R); below x_lo = x(XI_LO) every summit is pressed
-   and the kink-free ratio G_ell/G = r_oo + (its value at x_lo - r_oo)
-   (x_lo/x)^3/4, r_oo that of one summit's adhesive parts at infinite
-   compression (whose d^-3/4 tail this is; the kink term decays as d^-1/2
-   and would spoil the tail of r). rho < RHO_MIN is taken as RHO_MIN: the
+   and the kink-free ratio R = G_ell/G = r_oo + A s + B s^2, s = (x_lo/x)^3/4
+   (one summit's adhesive part is a series in d^-3/4; the kink term decays
+   as d^-1/2 and would spoil the tail of r): r_oo that of one summit's
+   adhesive parts at infinite compression (the generator's fit of that
+   series, within 2e-10), A and B from R and dR/dx at x_lo, the slope from
+   the four nodes there; the grid's own (Catmull-Rom) slope, ~1 % off, is
+   joined C1 by D s^12 (s - 1). rho < RHO_MIN is taken as RHO_MIN: the
    caller warns; at a fixed overlap the exact force falls 3.4 to 4.3 times
    per decade of rho near 1e-6, so the clamp overestimates it (r_oo, the
    correction, is 1.8 at 1e-3, 4.4 at 1e-4, 12 at 1e-5, 35 at 1e-6).
@@ -268,29 +277,29 @@ typedef struct {
    (physical units, tau over the table, x uniform in [-8, 8] or
    log-uniform in [-400, -6]; beyond the grid x_lo to 1e3 x_lo), 1e5 points
    per branch and range of rho (the test takes 30000 and 15000):
-   - rho 1e-4 to 1: loading 5.8e-5, unloading 4.2e-5; dF/d delta 4.4e-4
+   - rho 1e-4 to 1: loading 5.8e-5, unloading 4.1e-5; dF/d delta 4.4e-4
      and 7.2e-4 (Catmull-Rom slopes; kn is the exact derivative of the
      interpolated F); absolute below 3.0e-11 n_asp 8 w R_major;
-   - rho 1e-5 to 1e-4: loading 7.8e-5, unloading 6.5e-5; dF/d delta
-     4.0e-4 and 6.8e-4; absolute 2.7e-11;
-   - rho 1e-6 to 1e-5: loading 9.6e-5, dF/d delta 6.0e-4, absolute
-     1.3e-11. Unloading MISSES the 1e-4 target: 1.6e-4 (worst at rho
-     ~1.4e-6, tau ~ 0.12, x ~ -6 to -7, where the eta interpolation adds
-     to the x and ln rho ones: 1.2e-4 with eta on the rows; NR2 12 instead
-     of 10 gave 1.4e-4 for 0.25 MB), dF/d delta 1.8e-3 (the kn bound 1e-3
-     missed too), absolute 1.06e-10 (the 1e-10 bound missed);
-   - beyond x_lo the target is MISSED at every rho (both branches; the
-     loading branch's table is unchanged): the one-summit tail is off by
-     up to 2.1e-4 of the adhesive part at rho >= 1e-4 and 3.0e-4 below,
-     9.3e-8 of the whole force (not examined further; the former ~1e-8 of
-     the whole force and the test's former bound of 1e-4 rested on its
-     600 points there).
-   The matched scales within 5.7e-10 of dc_jkr_geometry. 694k floats (the
-   data header 7.3 MB; 629k, 6.6 MB with unloading on the xi grid).
-   Cost: ~225 ns per set-up and step (the unit test's bench, 223 to 241
-   on a loaded machine, the xi grid's 205 to 214 in the same runs; 2520
-   against 2320 instructions per call, callgrind), against ~30 us for the
-   exact law. */
+   - rho 1e-5 to 1e-4: loading 7.8e-5, unloading 6.1e-5; dF/d delta
+     4.0e-4 and 4.1e-4; absolute 2.7e-11;
+   - rho 1e-6 to 1e-5: loading 9.6e-5, unloading 8.6e-5 (at tau ~ 0.02,
+     x ~ -280 to -380: the z interpolation, nodes ~70 apart in x there);
+     dF/d delta 6.0e-4 and 8.0e-4; absolute 1.3e-11 and 6.0e-11 (with
+     Catmull-Rom in eta and the single z step unloading was 1.6e-4, kn
+     1.8e-3, absolute 1.06e-10; ln rho nodes twice as dense below 1e-4
+     gave 1.5e-4, eta rows 1/16 apart 1.1e-4);
+   - beyond x_lo: 4.0e-5 of the adhesive part at rho >= 1e-4 (near x_lo
+     at rho ~0.2: the grid's own error there, carried on), 3.4e-5 below,
+     4.1e-8 of the whole force, kn within 9e-9 of |kn| + |F|/sigma (both
+     branches; the former tail, one term matched in value only with r_oo
+     from the law at x = -1e4, eta = 8, noisy to 1e-4, was off by 3.0e-4).
+   The matched scales within 5.7e-10 of dc_jkr_geometry. 741k floats (the
+   data header 7.8 MB; 694k, 7.3 MB with the single z step; 629k, 6.6 MB
+   with unloading on the xi grid).
+   Cost: ~205 ns per set-up and step (the unit test's bench, 198 to 215
+   against 183 to 186 with Catmull-Rom in eta and the single z step in
+   the same runs; 2890 against 2580 instructions per call, callgrind),
+   against ~30 us for the exact law. */
 #define DC_GWAE_RHO_MIN 1e-6             /* the exact law's DC_JKR_RATIO_MIN */
 #define DC_GWAE_NR1 24                   /* ln rho cells on [ln 1e-4, 0] */
 #define DC_GWAE_NR2_L 8                  /* on [ln RHO_MIN, ln 1e-4], loading */
@@ -308,15 +317,19 @@ typedef struct {
 #define DC_GWAE_NETA_U 76               /* 52 + 24 */
 #define DC_GWAE_SCALE_PER_CELL 32
 /* the unloading grid's z (dc_gwae_z): nodes 1/XI_PER_UNIT apart on
-   [XI_LO - Z_A - Z_B, XI_HI] */
+   [XI_LO - Z_OFF, XI_HI] */
 #define DC_GWAE_Z_A 12.0
 #define DC_GWAE_Z_C0 0.7
 #define DC_GWAE_Z_W 0.5
 #define DC_GWAE_Z_D0 1.0
-#define DC_GWAE_Z_B 2.0
-#define DC_GWAE_Z_XM 0.5
+#define DC_GWAE_Z_B 3.0
+#define DC_GWAE_Z_XM 1.0
 #define DC_GWAE_Z_WB 0.6
-#define DC_GWAE_NZ_U 164                /* cells on [XI_LO - Z_A - Z_B, XI_HI] */
+#define DC_GWAE_Z_E 3.0
+#define DC_GWAE_Z_XE (-2.0)
+#define DC_GWAE_Z_WE 0.6
+#define DC_GWAE_Z_OFF (DC_GWAE_Z_A + DC_GWAE_Z_B + DC_GWAE_Z_E)   /* z's offset below XI_LO */
+#define DC_GWAE_NZ_U 180                /* cells on [XI_LO - Z_OFF, XI_HI] */
 
 /* -ln rho at node i of a branch's ln rho grid (n2 its NR2; i = -1 and
    NR1 + n2 + 1 the ghosts) */
@@ -356,36 +369,38 @@ static inline double dc_gwae_z_scale(double eta)
 }
 
 /* z of the unloading grid at x >= x(XI_LO), zs = dc_gwae_z_scale; *dz =
-   dz/dx: z = xs - Z_A psi(c) + Z_B (sb - 1) with
+   dz/dx: z = xs - Z_A psi(c) + Z_B (sb - 1) + Z_E (se - 1) with
    - xs = xi + u^2 (a + b u) e^u, u = x + 6 < 0 (xs = xi above): xi made
      C3 at x = -6 (a = -1/6, b = 1/6 - 7/216 cancel its second and third
      derivatives' jumps; dxs/dx >= 0.8 dxi/dx);
    - psi(c) = 1 / (1 + e^-(c - Z_C0)/Z_W), c = -x zs: Z_A more cells at
      c ~ Z_C0, i.e. at fixed x/D for small tau, where ln r's features lie;
-   - sb = 1 / (1 + e^-(x - Z_XM)/Z_WB): Z_B more cells near x = Z_XM, the
-     end of the circular table's kink term (x = 1). */
+   - sb = 1 / (1 + e^-(x - Z_XM)/Z_WB), se the same at Z_XE, Z_WE: Z_B
+     and Z_E more cells near the ends of the circular table's kink term's
+     weight (x = 1 and -2). */
 static inline double dc_gwae_z(double x, double zs, double *dz)
 {
-  double dxi, xi = dc_gwae_xi(x, &dxi), sb = 0.0;
+  double dxi, xi = dc_gwae_xi(x, &dxi), sb = 0.0, se = 0.0;
   if (x < -6.0) {
     const double u = x + 6.0, E = exp(u), a = -1.0 / 6.0, b = 1.0 / 6.0 - 7.0 / 216.0;
     xi += u * u * (a + b * u) * E;
     dxi += E * u * (2.0 * a + 3.0 * b * u + u * (a + b * u));
   }
   if (x > DC_GWAE_Z_XM - 40.0 * DC_GWAE_Z_WB) sb = 1.0 / (1.0 + exp((DC_GWAE_Z_XM - x) * (1.0 / DC_GWAE_Z_WB)));
+  if (x > DC_GWAE_Z_XE - 40.0 * DC_GWAE_Z_WE) se = 1.0 / (1.0 + exp((DC_GWAE_Z_XE - x) * (1.0 / DC_GWAE_Z_WE)));
   const double e1 = exp((DC_GWAE_Z_C0 + x * zs) * (1.0 / DC_GWAE_Z_W)), psi = 1.0 / (1.0 + e1);
   *dz = dxi + DC_GWAE_Z_A * zs * (1.0 / DC_GWAE_Z_W) * psi * (1.0 - psi) +
-        DC_GWAE_Z_B * (1.0 / DC_GWAE_Z_WB) * sb * (1.0 - sb);
-  return xi - DC_GWAE_Z_A * psi + DC_GWAE_Z_B * (sb - 1.0);
+        DC_GWAE_Z_B * (1.0 / DC_GWAE_Z_WB) * sb * (1.0 - sb) + DC_GWAE_Z_E * (1.0 / DC_GWAE_Z_WE) * se * (1.0 - se);
+  return xi - DC_GWAE_Z_A * psi + DC_GWAE_Z_B * (sb - 1.0) + DC_GWAE_Z_E * (se - 1.0);
 }
 
 /* The correction's cell for one contact: ln rho and eta weights. */
 typedef struct {
   int on;           /* 0: circular summits, no correction */
   int i[2];         /* ln rho cell per branch */
-  int j[2];         /* eta cell per branch */
+  int j[2];         /* eta cell per branch (unloading: its first of six rows) */
   double wr[2][4];  /* cubic weights in ln rho, per branch */
-  double we[2][4];  /* in eta, per branch */
+  double we[2][6];  /* in eta, per branch (loading 4 rows, unloading 6) */
   double ke;        /* k_e */
   double lr_inf;    /* ln r_oo */
   double zs;        /* dc_gwae_z_scale at the table's eta */
