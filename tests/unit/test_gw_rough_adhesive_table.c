@@ -339,6 +339,54 @@ static void test_band(void)
   CHECK(worst < 0.5 * worst_old);
 }
 
+/* P(a < S < b) for a standard normal S, a < b, in long double from the
+   tail away from 0 (the reference for the band weight) */
+static long double normal_mass_l(long double a, long double b)
+{
+  const long double r = 0.70710678118654752440L;
+  if (a >= 0) return 0.5L * (erfcl(a * r) - erfcl(b * r));
+  if (b <= 0) return 0.5L * (erfcl(-b * r) - erfcl(-a * r));
+  return 1.0L - 0.5L * (erfcl(b * r) + erfcl(-a * r));
+}
+
+/* The band's weight w = P(h_min < S < h)/P(h - D < S < h) (header) against
+   long-double erfc, in the step's own h and h_min, over both of its ways:
+   J's series where (|h| + 3) D < 1/2 (its truncation bound: 4e-7 relative
+   on J) and erfc elsewhere; h from -11 to 11, D from 0.02 to 3. Measured
+   2.6e-10 and 4.4e-12. */
+static void test_band_weight(void)
+{
+  const double R = 1e-3, E = 1e9, w = 0.05;
+  unsigned long long x = 2718281828ull;
+  double worst[2] = {0.0, 0.0};
+  int series = 0, erfc_way = 0;
+  for (int k = 0; k < 8; k++) {
+    const double sigma = 2e-9 * pow(2.0, k);   /* D from ~3 down to ~0.02 */
+    dc_gwa_table_pair p;
+    dc_gwa_table_radius r;
+    CHECK(dc_gwa_table_pair_init(E, w, sigma, 1.0, &p) == DC_OK && dc_gwa_table_radius_init(&p, R, &r) == DC_OK);
+    for (int m = 0; m < 4000; m++) {
+      const double h = -11.0 + 22.0 * check_uniform(&x), xi = 0.001 + 0.998 * check_uniform(&x);
+      const double delta = -h * sigma, dmax = delta + xi * r.db;
+      double hist[2] = {1.0, dmax};
+      dc_gwa_table_out o;
+      CHECK(dc_gwa_table_step(&p, R, delta, hist, &o) == DC_OK);
+      const double hc = -delta * p.inv_sigma, hmin = -dmax * p.inv_sigma, c = (fabs(hc) + 3.0) * r.D;
+      if (!(o.weight > 0.0 && o.weight < 1.0)) continue;   /* clamped at 1 by rounding */
+      const long double ref = normal_mass_l(hmin, hc) / normal_mass_l(hc - r.D, hc);
+      const int way = c >= 0.5;
+      worst[way] = fmax(worst[way], (double)fabsl((o.weight - ref) / ref));
+      series += way == 0;
+      erfc_way += way == 1;
+    }
+  }
+  printf("band weight against long-double erfc, worst relative: the series %.2e (%d points), erfc %.2e (%d)\n",
+         worst[0], series, worst[1], erfc_way);
+  CHECK(series > 1000 && erfc_way > 1000);
+  CHECK_ABS(worst[0], 0.0, 1e-8, "band weight, the series");
+  CHECK_ABS(worst[1], 0.0, 1e-10, "band weight, erfc");
+}
+
 /* The cut (dc_gwa_table_apart): an untouched contact more than X_CUT
    sigma apart feels nothing and stays untouched; just inside, the force
    is below the stated 2.6e-30 n_asp 8 w R, and so is the exact law's
@@ -668,6 +716,7 @@ int main(void)
   test_continuity();
   test_branches();
   test_band();
+  test_band_weight();
   test_cut();
   test_w_zero_and_domain();
   test_extremes();
