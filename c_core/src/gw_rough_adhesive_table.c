@@ -496,12 +496,13 @@ static double band_series(double h, double v)
 }
 
 /* P(a < S < b), a < b, from the tail away from 0 (no cancellation in
-   either tail) */
-static double normal_mass(double a, double b)
+   either tail), with eb = erfc(|b|/2^1/2) given: the band's two masses
+   share their upper end b = h */
+static double normal_mass(double a, double b, double eb)
 {
-  if (a >= 0.0) return 0.5 * (erfc(a * M_SQRT1_2) - erfc(b * M_SQRT1_2));
-  if (b <= 0.0) return 0.5 * (erfc(-b * M_SQRT1_2) - erfc(-a * M_SQRT1_2));
-  return 1.0 - 0.5 * (erfc(b * M_SQRT1_2) + erfc(-a * M_SQRT1_2));
+  if (a >= 0.0) return 0.5 * (erfc(a * M_SQRT1_2) - eb);
+  if (b <= 0.0) return 0.5 * (eb - erfc(-a * M_SQRT1_2));
+  return 1.0 - 0.5 * (eb + erfc(-a * M_SQRT1_2));
 }
 
 /* The weight of the unloading branch in the partly attached band: of the
@@ -528,9 +529,9 @@ static void band_weight(double h, double hmin, double D, double xi, double sigma
     ww = q < 1.0 ? q : 1.0;
     d = -(1.0 + ww * expm1(h * D - 0.5 * D * D)) / JD / sigma;
   } else {
-    const double Dn = normal_mass(h - D, h);
+    const double eh = erfc(fabs(h) * M_SQRT1_2), Dn = normal_mass(h - D, h, eh);
     if (Dn > 0.0) {
-      const double q = normal_mass(hmin, h) / Dn, ph = 0.3989422804014327 * exp(-0.5 * h * h),
+      const double q = normal_mass(hmin, h, eh) / Dn, ph = 0.3989422804014327 * exp(-0.5 * h * h),
                    pd = 0.3989422804014327 * exp(-0.5 * (h - D) * (h - D));
       ww = q < 1.0 ? q : 1.0;
       d = -((ph - ww * (ph - pd)) / Dn) / sigma;
