@@ -204,10 +204,19 @@ protected:
   /* The one contact-distance check: a force that acts at overlaps down to
      -range needs contact_distance_factor >= 1 + range / reach (reach: the
      sum of the radii, a wall's sphere radius); why_format (one %g, filled
-     with why_value) says what needs it. */
-  void checkReach(const SurfacesCloseData &d, double range, const char *why_format, double why_value)
+     with why_value) says what needs it. Inline: rough contacts check at
+     every step; the message is out of line. */
+  __attribute__((always_inline)) inline void checkReach(const SurfacesCloseData &d, double range,
+                                                        const char *why_format, double why_value)
   {
     const double reach = d.is_wall ? d.radi : d.radsum;
+    if (!(range <= DBL_MAX) || neighbor->contactDistanceFactor * reach < reach + range)
+      reachFailed(d, range, reach, why_format, why_value);
+  }
+
+  __attribute__((noinline)) void reachFailed(const SurfacesCloseData &d, double range, double reach,
+                                             const char *why_format, double why_value)
+  {
     if (!(range <= DBL_MAX)) {
       char why[256], msg[512];
       snprintf(why, sizeof why, why_format, why_value);
