@@ -189,6 +189,7 @@ private:
     double *ax = axisWanted(axis);
     const bool sq = superquadric(sidata);
     dc_hertz_geom g;
+    const dc_hertz_geom *gp = &g;   /* the geometry in use: g, or the pair's kept circle */
     g.R_force = g.R_area = reff;
     if (sq) {
       superquadricGeometry(sidata, g, ax);
@@ -203,14 +204,14 @@ private:
         /* products that leave the doubles make dc_gw_bound_force take the checked form */
         if (sphereBound[k].sigma != 0.0) dc_gw_bound_bind(&sphereBound[k], &c);
       }
-      g = c;
+      gp = &c;
     }
     if (delta > 0.0)   /* the smooth bodies' Hertz semi-axis: a^2 = 2 R_major delta D / K, spheres R delta */
-      checkHertzRange(sidata, sq ? 2.0 * g.R_major * delta * g.D / g.K : reff * delta, sq ? g.R_minor : reff);
+      checkHertzRange(sidata, sq ? 2.0 * gp->R_major * delta * gp->D / gp->K : reff * delta, sq ? gp->R_minor : reff);
     double P, Sn, kn, kt = 0.0;
     if (sigma == 0.0) {
-      const double root = dc_hertz_stiffness(Y, g.R_force, delta, &kn, &Sn);
-      kt = dc_mindlin_kt_circle(Geff[itype][jtype], g.R_area == g.R_force ? root : sqrt(g.R_area * delta));
+      const double root = dc_hertz_stiffness(Y, gp->R_force, delta, &kn, &Sn);
+      kt = dc_mindlin_kt_circle(Geff[itype][jtype], gp->R_area == gp->R_force ? root : sqrt(gp->R_area * delta));
       P = kn * delta;
     } else {
       if (gwElliptic) {
@@ -220,9 +221,9 @@ private:
           st = dc_gw_bound_force(bound, delta, &P, &Sn);
         } else {
           dc_gw_rough_state s;
-          st = gwPlastic ? dc_gw_rough_plastic(&g, Y, &plastic[itype * (ntypes + 1) + jtype],
+          st = gwPlastic ? dc_gw_rough_plastic(gp, Y, &plastic[itype * (ntypes + 1) + jtype],
                                                n_asp[itype][jtype], sigma, delta, &s)
-                         : dc_gw_rough_elliptic(&g, Y, n_asp[itype][jtype], sigma, delta, &s);
+                         : dc_gw_rough_elliptic(gp, Y, n_asp[itype][jtype], sigma, delta, &s);
           if (st == DC_OK) { P = s.F; Sn = s.kn; }
         }
         if (st != DC_OK) {
@@ -234,13 +235,13 @@ private:
         dc_gw_sphere_pair_force(&laws[itype * (ntypes + 1) + jtype], sqrt(reff), delta, &P, &Sn);
       }
       kn = delta > 0.0 ? P / delta : 0.0;
-      if (delta > 0.0) kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(g.R_area * delta));
+      if (delta > 0.0) kt = dc_mindlin_kt_circle(Geff[itype][jtype], sqrt(gp->R_area * delta));
     }
     applyForce(sidata, P, delta, vn, Sn, kn, kt, i_forces, j_forces);
     if (ax) {
       if (!sq && !(gwElliptic && sigma != 0.0)) hertzGeometry(reff, reff, g);  /* spheres: only R_force, R_area were set */
       dc_contact c;
-      dc_gw_rough_normal(&g, Y, delta, P, Sn, &c);
+      dc_gw_rough_normal(gp, Y, delta, P, Sn, &c);
       publish(sidata, c, ax);
     }
   }
