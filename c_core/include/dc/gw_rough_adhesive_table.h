@@ -106,10 +106,11 @@
    cell). A settled contact (touched, wholly on one branch, in the near
    cell it kept, above the blend, no kink term) takes a short path
    without the set-up: in the monodisperse bench scene (callgrind, 10000
-   steps, tau ~ 36) 90 % of the steps; 168 instructions per step on
-   average (the short path's tests 137, the other steps 312 more),
-   against 216 without the short path (and 200 with the per-type-pair
-   memo of cells the record replaced);
+   steps, tau ~ 36) 90 % of the steps; 175 instructions per step on
+   average (3.72 G over 21.3 M steps: the short path's tests 137, the
+   other steps about 380 more), against 216 without the short path when
+   it came (and 200 with the per-type-pair memo of cells the record
+   replaced);
    polydisperse spheres: the record gave the whole run 17 % fewer
    instructions than with the radius set up and the cells formed at
    every step. The interpolation is in the cubic's
