@@ -82,7 +82,8 @@ public:
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
     dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
-    curvatureCheck(0.0), name_(name), unsupported_(unsupported), checkMax_(0.0), checked_(0), refreshed_(0), over_()
+    curvatureCheck(0.0), name_(name), unsupported_(unsupported), rank_(0), checkMax_(0.0), checked_(0), refreshed_(0),
+    over_()
   {}
 
   void registerSettings(Settings &settings)
@@ -106,7 +107,7 @@ public:
     if (curvatureCheck > 0.0 && curvature.caching() && screen)
       fprintf(screen, "Normal model %s: curvature reused %ld times, computed %ld times; largest relative deviation "
               "%.3e, above curvatureTolerance on %ld, above 10 times it on %ld (rank %d)\n", name_, checked_, refreshed_,
-              checkMax_, over_[0], over_[1], comm->me);
+              checkMax_, over_[0], over_[1], rank_);
 #endif
   }
 
@@ -118,6 +119,7 @@ public:
     if ((unsupported_ & NO_CURVATURE_REUSE) && curvatureTolerance > 0.0)
       stop(true, "curvatureTolerance is not available: the model recomputes its geometry every step");
     if (!(curvatureCheck >= 0.0 && curvatureCheck <= 1.0)) stop(true, "curvatureCheck must be in [0, 1]");
+    rank_ = comm->me;   /* for the destructor: LIGGGHTS deletes comm before the pair style */
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     curvature.setup(lmp, c, maxRadiusFactor, name_);
     curvature.setupCache(hsetup, curvatureTolerance, sizeof(dc_hertz_geom) / sizeof(double));
@@ -470,6 +472,7 @@ private:
 
   const char *name_;
   int unsupported_;
+  int rank_;          /* this process's rank, kept for the destructor */
   double checkMax_;   /* curvatureCheck: the largest deviation seen, on how many reuses, refreshes */
   long checked_, refreshed_, over_[2];   /* over_: deviations above t, 10 t */
   ContactPatchWriter patch;
