@@ -153,7 +153,7 @@ public:
       if (p.sigma == 0.0) return;
       /* untouched: the force starts 12 sigma apart; touched: anywhere in the neighbour list */
       const double *h = &sidata.contact_history[history_offset];
-      const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
+      const double r0 = reachRadius(sidata);
       const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;
       double delta, vn;
       if (!gap.closeOverlap(lmp, sidata, range, delta, vn)) return;
@@ -251,10 +251,9 @@ private:
   /* Stops the run when attached summits could pull beyond the neighbour list. */
   void checkReach(const SurfacesIntersectData &sidata, double reach)
   {
-    const double r0 = sidata.is_wall ? sidata.radi : sidata.radsum;
-    if (neighbor->contactDistanceFactor * r0 < r0 + reach)
+    if (outOfReach(sidata, neighbor->contactDistanceFactor, reach))
       fail("attached summits pull up to %g m apart: set neigh_modify contact_distance_factor >= %.12g", reach,
-           1.0 + reach / r0);
+           1.0 + reach / reachRadius(sidata));
   }
 
   /* After the step (status st, history h, output o): the contact flag and

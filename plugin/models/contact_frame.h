@@ -19,6 +19,23 @@ inline double sphereEffectiveRadius(const SurfacesCloseData &d)
   return d.is_wall ? d.radi : d.radi * d.radj / (d.radi + d.radj);
 }
 
+/* The radius the neighbour list's reach scales: the radius sum (wall: the
+   particle's radius); a pair stays listed while its centre distance is
+   below contact_distance_factor times it. */
+inline double reachRadius(const SurfacesCloseData &d)
+{
+  return d.is_wall ? d.radi : d.radsum;
+}
+
+/* True when a force acting up to `range` [m] apart (surface to surface)
+   reaches beyond the neighbour list: the factor needed is 1 + range /
+   reachRadius. */
+inline bool outOfReach(const SurfacesCloseData &d, double contact_distance_factor, double range)
+{
+  const double r0 = reachRadius(d);
+  return contact_distance_factor * r0 < r0 + range;
+}
+
 /* The radius LIGGGHTS' stock models use: the sphere's effective radius, or
    for superquadrics the volume-equivalent one (sidata.reff). */
 inline double stockEffectiveRadius(const SurfacesIntersectData &sidata, bool superquadric_atoms)

@@ -211,9 +211,8 @@ protected:
   __attribute__((always_inline)) inline void checkReach(const SurfacesCloseData &d, double range,
                                                         const char *why_format, double why_value)
   {
-    const double reach = d.is_wall ? d.radi : d.radsum;
-    if (!(range <= DBL_MAX) || neighbor->contactDistanceFactor * reach < reach + range)
-      reachFailed(d, range, reach, why_format, why_value);
+    if (!(range <= DBL_MAX) || outOfReach(d, neighbor->contactDistanceFactor, range))
+      reachFailed(d, range, reachRadius(d), why_format, why_value);
   }
 
   __attribute__((noinline)) void reachFailed(const SurfacesCloseData &d, double range, double reach,
@@ -226,7 +225,7 @@ protected:
                "too small", why, d.itype, d.jtype, Yeff[d.itype][d.jtype]);
       stop(false, msg);
     }
-    if (neighbor->contactDistanceFactor * reach < reach + range) {
+    if (outOfReach(d, neighbor->contactDistanceFactor, range)) {
       char why[256], msg[512];
       snprintf(why, sizeof why, why_format, why_value);
       const double factor = 1.0 + range / reach;

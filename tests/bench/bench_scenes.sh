@@ -14,7 +14,10 @@
 # runs with that executable in the same round-robin, and a last table gives
 # each configuration's time against it (before/after a change).
 # DC_BENCH_ONLY="st sth ..." runs only the named configurations (their
-# rows print; the others show as n/a).
+# rows print; the others show as n/a). A control row runs the sphere
+# configuration se twice (se, se_again): the ratio of two identical
+# configurations, i.e. the noise left in a best-of-REPS ratio on this
+# machine (up to several per cent on shared machines).
 # The settled scenes (tests/bench/in.settled_spheres, in.settled_superquadrics)
 # are prepared once per invocation and model, before the timed runs and on 2
 # ranks (untimed: a settling run that writes a restart file, 8.5 s for the
@@ -100,6 +103,9 @@ configs=(
   "sqe2|$sqs|hertz_elliptic|10000|2|-var rfile $prep/sq_hertz_elliptic.restart"
   # the same with the curvature reused across steps (curvatureTolerance 1e-4)
   "sqr|$sqs|hertz_elliptic|10000|1|-var rfile $prep/sq_hertz_elliptic_t4.restart -var ctol 1e-4"
+  # control: configuration se again, last in the round-robin; its time
+  # against se is what a best-of-REPS ratio carries as noise on this machine
+  "se_again|$sph|hertz_elliptic|10000|1|"
 )
 # untimed preparation of the settled scenes: once per restart file named by
 # a configuration that runs
@@ -185,6 +191,8 @@ for tag, what, n in (("ss", "3264 spheres, settled bed", 20000), ("sq", "1056 su
         tag + "h", tag + "h2", tag + "e", tag + "e2")
 row(lambda h, e, r: "    superquadrics, hertz_elliptic with curvatureTolerance 1e-4, 1 rank %9.3f s = %.4f x stock hertz "
     "(%.4f x without)" % (r, r / h, e / h), "sqh", "sqe", "sqr")
+row(lambda se, sa: "control: the same configuration (spheres, hertz_elliptic) run twice, second and last in the "
+    "round-robin: %.3f s and %.3f s, ratio %.4f (the noise in this run's ratios)" % (se, sa, sa / se), "se", "se_again")
 PY
 if [ -n "$base" ]; then
   echo
