@@ -91,17 +91,18 @@ public:
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     double &formed = sidata.contact_history[contact_offset];
-    const bool forming = formed == 0.0;
+    const bool forming = !(formed > 0.0);   /* formed is 0 or 1: one test, where == 0 takes a NaN-aware three */
     formed = 1.0;
     if (!forming && !superquadric(sidata) && !patchStored()) {
       /* spheres at the Hertz-like end, the patch not stored: the inline
          hot path of dc_jkr_sphere (the same bits) */
       const int itype = sidata.itype, jtype = sidata.jtype;
       const double R = sphereEffectiveRadius(sidata), delta = sidata.deltan;
+      const dc_jkr_sphere_pair &pair = spheres[itype * (ntypes_ + 1) + jtype];
       double a, P;
-      if (dc_jkr_sphere_near_hertz(&spheres[itype * (ntypes_ + 1) + jtype], R, delta, &a, &P)) {
+      if (dc_jkr_sphere_near_hertz(&pair, R, delta, &a, &P)) {
         checkHertzRange(sidata, a * a, R);
-        const double kn = dc_punch_stiffness_circle(Yeff[itype][jtype], a);
+        const double kn = dc_punch_stiffness_circle(pair.Estar, a);   /* pair.Estar is Yeff */
         applyForce(sidata, P, delta, sidata.vn, kn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], a), i_forces, j_forces);
         return;
       }

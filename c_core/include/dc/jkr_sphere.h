@@ -104,11 +104,10 @@ static inline double dc_jkr_psi_series(double nu, double kappa)
   return even + kappa * odd;
 }
 
-/* psi at nu = kappa^2 in [0, DC_JKR_NU_0]: the series up to DC_JKR_NU_S,
-   above A1 and B1 by Estrin's scheme (the generator's order). */
+/* psi at nu = kappa^2 in [DC_JKR_NU_S, DC_JKR_NU_0]: A1 and B1 by
+   Estrin's scheme (the generator's order). */
 static inline double dc_jkr_psi_near(double nu, double kappa)
 {
-  if (nu <= DC_JKR_NU_S) return dc_jkr_psi_series(nu, kappa);
   const double x2 = nu * nu, x4 = x2 * x2, x8 = x4 * x4;
   double y[2];
   for (int f = 0; f < 2; f++) {
@@ -122,6 +121,7 @@ static inline double dc_jkr_psi_near(double nu, double kappa)
 /* psi at nu = kappa^2 in [0, DC_JKR_NU_H] (and a little beyond) */
 static inline double dc_jkr_psi(double nu, double kappa)
 {
+  if (nu <= DC_JKR_NU_S) return dc_jkr_psi_series(nu, kappa);
   if (nu <= DC_JKR_NU_0) return dc_jkr_psi_near(nu, kappa);
   const int p = nu - DC_JKR_NU_0 < DC_JKR_NU_PIECES - 1 ? (int)(nu - DC_JKR_NU_0) : DC_JKR_NU_PIECES - 1;
   double y[2], s[2];
@@ -131,8 +131,10 @@ static inline double dc_jkr_psi(double nu, double kappa)
 
 /* What a material pair fixes for the Hertz-like end: E* and c = 2 pi w/E*;
    ok = 1 when E* and w lie in (1e-60, 1e60), where the inline path
-   applies (dc_jkr_sphere_nu_). Built once per pair, it saves a division
-   and the range checks of E* and w per contact. */
+   applies (dc_jkr_sphere_nu_); otherwise c is NaN, so that nu is NaN and
+   the inline path's test of nu turns the contact away without a test of
+   ok. Built once per pair, it saves a division and the range checks of E*
+   and w per contact. */
 typedef struct {
   double Estar, c;
   int ok;
@@ -143,7 +145,7 @@ static inline dc_jkr_sphere_pair dc_jkr_sphere_pair_of(double Estar, double w)
   dc_jkr_sphere_pair p;
   p.ok = Estar > 1e-60 && Estar < 1e60 && w > 1e-60 && w < 1e60;
   p.Estar = Estar;
-  p.c = p.ok ? 2.0 * M_PI * w / Estar : 0.0;
+  p.c = p.ok ? 2.0 * M_PI * w / Estar : NAN;
   return p;
 }
 
@@ -175,7 +177,7 @@ static inline double dc_jkr_sphere_force_(double Estar, double a0, double delta,
 static inline int dc_jkr_sphere_near_hertz(const dc_jkr_sphere_pair *p, double R, double delta, double *a, double *F)
 {
   double a0, nu;
-  if (!p->ok || !dc_jkr_sphere_nu_(R, p->c, delta, &a0, &nu) || !(nu <= DC_JKR_NU_H)) return 0;
+  if (!dc_jkr_sphere_nu_(R, p->c, delta, &a0, &nu) || !(nu <= DC_JKR_NU_H)) return 0;   /* NaN c: not ok */
   const double psi = dc_jkr_psi(nu, sqrt(nu));
   *a = a0 * psi;
   *F = dc_jkr_sphere_force_(p->Estar, a0, delta, psi);
