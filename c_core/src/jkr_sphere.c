@@ -94,7 +94,7 @@ int dc_jkr_sphere(double R, double Estar, double w, double delta, dc_jkr_state *
 {
   double a0, nu;
   const dc_jkr_sphere_pair pr = dc_jkr_sphere_pair_of(Estar, w);
-  if (pr.ok && dc_jkr_sphere_nu_(R, pr.c, delta, &a0, &nu) && nu <= DC_JKR_NU_H) {
+  if (dc_jkr_sphere_nu_(R, pr.c, delta, &a0, &nu) && nu <= DC_JKR_NU_H) {   /* NaN c: not here */
     /* the Hertz-like end (dc/jkr_sphere.h), dF/d delta = (dF/da)/(d delta/da)
        = 2 E* a0 psi (psi^2 + 3)/(3 psi^2 + 1) */
     const double psi = dc_jkr_psi(nu, sqrt(nu)), psi2 = psi * psi;

@@ -129,30 +129,27 @@ static inline double dc_jkr_psi(double nu, double kappa)
   return dc_jkr_psi_poly[p][0][0] + (s[0] + kappa * y[1]);
 }
 
-/* What a material pair fixes for the Hertz-like end: E* and c = 2 pi w/E*;
-   ok = 1 when E* and w lie in (1e-60, 1e60), where the inline path
-   applies (dc_jkr_sphere_nu_); otherwise c is NaN, so that nu is NaN and
-   the inline path's test of nu turns the contact away without a test of
-   ok. Built once per pair, it saves a division and the range checks of E*
-   and w per contact. */
+/* What a material pair fixes for the Hertz-like end: E* and c = 2 pi w/E*
+   where E* and w lie in (1e-60, 1e60), the range of the inline path
+   (dc_jkr_sphere_nu_); elsewhere c is NaN, so that nu is NaN and the
+   path's test of nu turns every contact away. Built once per pair, it
+   saves a division and the range checks of E* and w per contact. */
 typedef struct {
   double Estar, c;
-  int ok;
 } dc_jkr_sphere_pair;
 
 static inline dc_jkr_sphere_pair dc_jkr_sphere_pair_of(double Estar, double w)
 {
   dc_jkr_sphere_pair p;
-  p.ok = Estar > 1e-60 && Estar < 1e60 && w > 1e-60 && w < 1e60;
   p.Estar = Estar;
-  p.c = p.ok ? 2.0 * M_PI * w / Estar : NAN;
+  p.c = Estar > 1e-60 && Estar < 1e60 && w > 1e-60 && w < 1e60 ? 2.0 * M_PI * w / Estar : NAN;
   return p;
 }
 
 /* a0 and nu = a0 c/delta^2 for R in (1e-60, 1e60), 0 < delta < 1e60 with
-   R delta a normal number, c of an ok pair (no other intermediate can
-   leave the doubles; 1/delta^2 overflowing gives nu = inf); 0 (nothing
-   written) outside. */
+   R delta a normal number, c of a pair (no other intermediate can leave
+   the doubles; 1/delta^2 overflowing gives nu = inf, a NaN c nu = NaN); 0
+   (nothing written) outside. */
 static inline int dc_jkr_sphere_nu_(double R, double c, double delta, double *a0, double *nu)
 {
   if (!(R > 1e-60 && R < 1e60 && delta > 0.0 && delta < 1e60 && R * delta >= DBL_MIN)) return 0;
@@ -170,14 +167,14 @@ static inline double dc_jkr_sphere_force_(double Estar, double a0, double delta,
 
 /* The hot path of dc_jkr_sphere, inline: where nu <= DC_JKR_NU_H (kappa
    <= 4, delta >= 0.575 delta_scale: the Hertz-like end where compressed
-   DEM contacts spend their time), p ok and R, delta as for
+   DEM contacts spend their time), p's c not NaN and R, delta as for
    dc_jkr_sphere_nu_, the contact radius *a and force *F of
    dc_jkr_sphere(R, p->Estar, w, delta) to the bit, and 1; elsewhere 0 and
    nothing written (call dc_jkr_sphere). */
 static inline int dc_jkr_sphere_near_hertz(const dc_jkr_sphere_pair *p, double R, double delta, double *a, double *F)
 {
   double a0, nu;
-  if (!dc_jkr_sphere_nu_(R, p->c, delta, &a0, &nu) || !(nu <= DC_JKR_NU_H)) return 0;   /* NaN c: not ok */
+  if (!dc_jkr_sphere_nu_(R, p->c, delta, &a0, &nu) || !(nu <= DC_JKR_NU_H)) return 0;
   const double psi = dc_jkr_psi(nu, sqrt(nu));
   *a = a0 * psi;
   *F = dc_jkr_sphere_force_(p->Estar, a0, delta, psi);
