@@ -81,7 +81,7 @@ public:
                 int unsupported = 0) :
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
-    dampingLaw(DC_DAMPING_RESTITUTION), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
+    dampingLaw(DC_DAMPING_RESTITUTION), invNktv2p(1.0 / force->nktv2p), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
     curvatureCheck(0.0), name_(name), unsupported_(unsupported), rank_(0), checkMax_(0.0), checked_(0), refreshed_(0),
     over_()
   {}
@@ -336,12 +336,11 @@ protected:
       gamman = dc_damping_gamma(dampingLaw, coef, Sn > 0.0 ? Sn : 0.0, d, sidata.meff);
       if (tangential_damping) gammat = dc_damping_gamma(dampingLaw, coef, kt, d, sidata.meff);
     }
-    const double nktv2p = force->nktv2p;
-    double Fn = -gamman * vn + P / nktv2p;
+    double Fn = -gamman * vn + P * invNktv2p;
     if (limitForce && Fn < 0.0) Fn = 0.0;
     sidata.Fn = Fn;
-    sidata.kn = kn / nktv2p;
-    sidata.kt = kt / nktv2p;
+    sidata.kn = kn * invNktv2p;
+    sidata.kt = kt * invNktv2p;
     sidata.gamman = gamman;
     sidata.gammat = gammat;
     applyNormalForce(sidata, Fn, atom->x, i_forces, j_forces);
@@ -425,6 +424,8 @@ protected:
   bool tangential_damping, limitForce, viscoelastic, contactPatch;
   int dampingLaw;                  /* dc_damping_law */
   std::vector<double> dampCoef;    /* its coefficient per type pair */
+  double invNktv2p;                /* 1/force->nktv2p: 1 in the granular unit styles (si, cgs,
+                                      micro, nano), so P/nktv2p to the bit */
   int ntypes_;
   double maxRadiusFactor, curvatureTolerance, curvatureCheck;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG

@@ -146,11 +146,10 @@ public:
                sidata.jtype, dc_status_str(st));
       stop(false, msg);
     }
-    const double nktv2p = force->nktv2p;
     const double kt = dc_mindlin_kt_circle(Geff[sidata.itype][sidata.jtype], out.c.a);
-    sidata.Fn = out.F / nktv2p;
-    sidata.kn = (sidata.deltan > 0.0 ? out.c.F / sidata.deltan : out.K) / nktv2p;   /* secant */
-    sidata.kt = kt / nktv2p;
+    sidata.Fn = out.F * invNktv2p;
+    sidata.kn = (sidata.deltan > 0.0 ? out.c.F / sidata.deltan : out.K) * invNktv2p;   /* secant */
+    sidata.kt = kt * invNktv2p;
     sidata.gamman = out.gamma;
     sidata.gammat = tangential_damping ? out.gamma : 0.0;
     applyNormalForce(sidata, sidata.Fn, atom->x, i_forces, j_forces);
