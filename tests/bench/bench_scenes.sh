@@ -158,13 +158,10 @@ row(lambda sh, se: "2888 spheres settling, 10000 steps, 1 rank          %9.3f s 
 row(lambda qh, qe: "324 superquadrics settling, 15000 steps, 1 rank     %9.3f s   %9.3f s     %.4f" % (qh, qe, qe / qh), "qh", "qe")
 row(lambda sr, sh: "2888 spheres: gw_rough (tabulated GW law, sigma = 0.01 r) %.3f s = %.4f x stock hertz" % (sr, sr / sh), "sr", "sh")
 row(lambda sh5, sr: "    same contact distance (1.09): stock hertz %.3f s; gw_rough = %.4f x" % (sh5, sr / sh5), "sh5", "sr")
-row(lambda sra, sr, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
-    "%.3f s = %.4f x gw_rough (default law, 1.09), %.4f x gw_rough (default law, 1.12), %.4f x gw_rough gwElliptic on (1.12)"
-    % (sra, sra / sr, sra / sr2, sra / sre), "sra", "sr", "sr2", "sre")
-if "sr" not in t:
-    row(lambda sra, sr2, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
-        "%.3f s = %.4f x gw_rough (default law, %.3f s), %.4f x gw_rough gwElliptic on (%.3f s)"
-        % (sra, sra / sr2, sr2, sra / sre, sre), "sra", "sr2", "sre")
+row(lambda sra, sre: "2888 spheres: gw_rough gwElliptic on + cohesion gw_adhesion (w = 0.05 J/m^2, contact distance 1.12) "
+    "%.3f s = %.4f x gw_rough gwElliptic on (%.3f s)" % (sra, sra / sre, sre)
+    + "".join(", %.4f x gw_rough (default law, contact distance %s)" % (sra / float(t[k]), cd)
+              for k, cd in (("sr", "1.09"), ("sr2", "1.12")) if k in t), "sra", "sre")
 row(lambda spa, spe: "    polydisperse (d 2.6-3.4 mm, contact distance 1.14): with cohesion %.3f s = %.4f x gw_rough "
     "gwElliptic on (%.3f s)" % (spa, spa / spe, spe), "spa", "spe")
 row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
