@@ -17,7 +17,7 @@
    radii from superquadric_curvature.h with gw_rough's maxRadiusFactor, the
    overlap before touch from superquadric_gap.h). Pairs with sigma = 0 get
    no force. The force acts from the Gaussian tail of the summit heights on
-   (12 sigma apart, dc_gwa_table_apart) and, once pressed, until the lowest
+   (8 sigma apart, dc_gwa_table_apart) and, once pressed, until the lowest
    attached summit lets go, (D + 8) sigma apart at most: the deck must set
    contact_distance_factor so that the pair stays in reach; the run stops
    naming the value needed. */
@@ -151,7 +151,7 @@ public:
     if (atom->superquadric_flag) {
       const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
       if (p.sigma == 0.0) return;
-      /* untouched: the force starts 12 sigma apart; touched: anywhere in the neighbour list */
+      /* untouched: the force starts 8 sigma apart; touched: anywhere in the neighbour list */
       const double *h = &sidata.contact_history[history_offset];
       const double r0 = reachRadius(sidata);
       const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;

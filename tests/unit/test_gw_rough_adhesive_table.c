@@ -387,15 +387,17 @@ static void test_band_weight(void)
   CHECK_ABS(worst[1], 0.0, 1e-10, "band weight, erfc");
 }
 
-/* The cut (dc_gwa_table_apart): an untouched contact more than X_CUT
+/* The cut (dc_gwa_table_apart): an untouched contact more than X_CUT = 8
    sigma apart feels nothing and stays untouched; just inside, the force
-   is below the stated 2.6e-30 n_asp 8 w R, and so is the exact law's
-   adhesive part at the cut; after a touch the cut no longer applies. */
+   is below the stated 3.3e-16 n_asp 8 w R, and so is the exact law's
+   adhesive part at the cut (3.26e-16 as tau -> 0, smaller above); after a
+   touch the cut no longer applies. */
 static void test_cut(void)
 {
-  const double R = 1e-3, E = 1e9, n = 100.0;
-  const double sigmas[] = {1e-9, 1e-7, 1e-5};
-  for (int k = 0; k < 3; k++) {
+  const double R = 1e-3, E = 1e9, n = 100.0, cut = DC_GWA_TABLE_X_CUT;
+  CHECK(cut == 8.0);
+  const double sigmas[] = {1e-10, 1e-9, 1e-7, 1e-5};
+  for (int k = 0; k < 4; k++) {
     const double sigma = sigmas[k], w = 0.05, Fs = n * 8 * w * R;
     dc_gwa_table_pair p;
     CHECK(dc_gwa_table_pair_init(E, w, sigma, n, &p) == DC_OK);
@@ -403,17 +405,17 @@ static void test_cut(void)
     CHECK(dc_jkr_geometry(R, R, E, w, &g) == DC_OK);
     double hist[2] = {0, 0};
     dc_gwa_table_out o;
-    CHECK(dc_gwa_table_step(&p, R, -12.001 * sigma, hist, &o) == DC_OK);
+    CHECK(dc_gwa_table_step(&p, R, -(cut + 0.001) * sigma, hist, &o) == DC_OK);
     CHECK(o.F == 0.0 && o.kn == 0.0 && o.weight == 0.0 && hist[0] == 0.0 && hist[1] == 0.0);
-    CHECK(dc_gwa_table_step(&p, R, -11.999 * sigma, hist, &o) == DC_OK);
-    CHECK(o.F < 0.0 && -o.F < 2.6e-30 * Fs && hist[0] == 1.0);
+    CHECK(dc_gwa_table_step(&p, R, -(cut - 0.001) * sigma, hist, &o) == DC_OK);
+    CHECK(o.F < 0.0 && -o.F < 3.3e-16 * Fs && hist[0] == 1.0);
     double Fe, ke;
-    CHECK(exact(&g, n, sigma, -12.0 * sigma, DC_GW_LOADING, &Fe, &ke) == 0);
-    CHECK(fabs(Fe) < 2.6e-30 * Fs);
-    printf("cut at h = 12 (sigma %g): F just inside %.2e n_asp 8 w R, exact law at the cut %.2e\n", sigma,
-           -o.F / Fs, fabs(Fe) / Fs);
+    CHECK(exact(&g, n, sigma, -cut * sigma, DC_GW_LOADING, &Fe, &ke) == 0);
+    CHECK(Fe < 0.0 && -Fe < 3.3e-16 * Fs);
+    printf("cut at h = %g (sigma %g): F just inside %.3e n_asp 8 w R, exact law at the cut %.3e\n", cut, sigma,
+           -o.F / Fs, -Fe / Fs);
     /* touched: no cut (a force acts) */
-    CHECK(dc_gwa_table_step(&p, R, -12.5 * sigma, hist, &o) == DC_OK);
+    CHECK(dc_gwa_table_step(&p, R, -(cut + 0.5) * sigma, hist, &o) == DC_OK);
     CHECK(o.F < 0.0);
   }
 }

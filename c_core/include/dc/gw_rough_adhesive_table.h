@@ -85,8 +85,8 @@
    gave a contact that only grazed, at h = 12 and back at 12.5, a pull of
    9e-4 n_asp 8 w R). Like the truth, the force has a kink where loading
    turns to unloading. The history resets (next step loads afresh) when
-   the lowest attached summit is beyond x = 8 (force < 1e-15 n_asp w R);
-   a contact that has not touched starts at h = X_CUT = 12
+   the lowest attached summit is beyond x = 8 (force below 3.3e-16 n_asp
+   8 w R); a contact that has not touched starts at h = X_CUT = 8
    (dc_gwa_table_apart).
    Work of adhesion 0: force and stiffness exactly 0.
    Error against the exact law (tests/unit/test_gw_rough_adhesive_table.c:
@@ -261,8 +261,8 @@ typedef struct {
    throughout left 2.7e-4 at rho >= 1e-4 and tau < 0.14; above tau ~ 7
    they give the same errors). The circular table's eta clamping applies. The scales (ln(delta_c / delta_c,circle(R_major)),
    ln(F_s/8 w R_major), k_e, ln r_oo) at 32 nodes per cell of ln(1e4)/NR1
-   on [ln RHO_MIN, 0]. Beyond the grid: r held at x > 8 (force < 1e-15
-   n_asp w R); below x_lo = x(XI_LO) every summit is pressed
+   on [ln RHO_MIN, 0]. Beyond the grid: r held at x > 8 (force below
+   2.4e-16 n_asp 8 w R_major); below x_lo = x(XI_LO) every summit is pressed
    and the kink-free ratio R = G_ell/G = r_oo + A s + B s^2, s = (x_lo/x)^3/4
    (one summit's adhesive part is a series in d^-3/4; the kink term decays
    as d^-1/2 and would spoil the tail of r): r_oo that of one summit's
@@ -504,21 +504,26 @@ static inline double dc_gwa_table_contact_reach(const dc_gwa_table_pair *p, cons
 
 /* Apart: a contact that has not touched (hist[0] = 0) with the summits
    more than X_CUT sigma apart (h > X_CUT) feels no force and stays
-   untouched: the step returns F = kn = 0 and leaves hist as it is. There
-   the table's G is below 2.6e-30 on every eta row (the continuation
-   beyond X_HI, which bounds the Gaussian tail from above), so the cut is
-   a jump below 2.6e-30 n_asp 8 w R. A caller may test it before setting
+   untouched: the step returns F = kn = 0 and leaves hist as it is. X_CUT
+   is where the table ends (X_HI) and where the history resets: there G is
+   below 3.3e-16 on every eta row and both branches (the exact law's below
+   3.26e-16), so the cut is a jump below 3.3e-16 n_asp 8 w R (2.4e-16 n_asp
+   8 w R_major with elliptic summits), 6000 times below the table's stated
+   absolute error. (At 12, as before, the jump was 2.6e-30, but contacts
+   that came within 12 sigma and no nearer, common on polydisperse spheres,
+   took the band and beyond-table paths for that force: 7 % of the
+   polydisperse bench's instructions.) A caller may test it before setting
    anything else up (it reads only sigma): with a contact distance well
    beyond the reach (polydisperse spheres need it) most close pairs are
    that far apart. */
-#define DC_GWA_TABLE_X_CUT 12.0
+#define DC_GWA_TABLE_X_CUT DC_GWA_TABLE_X_HI
 static inline int dc_gwa_table_apart(const dc_gwa_table_pair *p, double delta, const double *hist)
 {
   return hist[0] == 0.0 && -delta * p->inv_sigma > DC_GWA_TABLE_X_CUT;
 }
 
 /* Reach: the separation (-delta) beyond which the force is below
-   1e-15 n_asp w R on either branch: (D + 8) sigma. */
+   3.3e-16 n_asp 8 w R on either branch: (D + 8) sigma. */
 double dc_gwa_table_reach(const dc_gwa_table_pair *p, double R);
 
 #ifdef __cplusplus
