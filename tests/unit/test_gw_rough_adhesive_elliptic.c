@@ -293,6 +293,32 @@ static void test_w_zero_domain_nan(void)
   CHECK(bad == 0);
 }
 
+/* The cut (dc_gwa_table_apart) with elliptic summits: just inside X_CUT
+   (untouched, loading) and with the lowest attached summit at x = X_CUT
+   (unloading), the force is below the stated 2.4e-16 n_asp 8 w R_major
+   for every ratio and tau. */
+static void test_cut(void)
+{
+  const double Rmaj = 1e-3, w = 0.05, n = 100.0, Fs = n * 8 * w * Rmaj, x = DC_GWA_TABLE_X_CUT - 1e-7;
+  double worst = 0.0;
+  for (double sigma = 1e-10; sigma <= 1e-4; sigma *= 3.0)
+    for (double rho = DC_GWAE_RHO_MIN; rho <= 1.0; rho *= 3.0) {
+      dc_gwa_table_pair p;
+      dc_gwa_table_radius r;
+      CHECK(dc_gwa_table_pair_init(1e9, w, sigma, n, &p) == DC_OK);
+      CHECK(dc_gwa_table_radius_init_elliptic(&p, Rmaj, rho * Rmaj, &r) == DC_OK);
+      for (int b = 0; b < 2; b++) {
+        double hist[2] = {(double)b, 0.0};
+        dc_gwa_table_out o;
+        CHECK(dc_gwa_table_step_radius(&p, &r, -(x + (b ? r.D : 0.0)) * sigma, hist, &o) == DC_OK);
+        CHECK(o.F < 0.0 && o.weight == (double)b);
+        if (-o.F / Fs > worst) worst = -o.F / Fs;
+      }
+    }
+  printf("elliptic summits at the cut x = %g: |F| at most %.3e n_asp 8 w R_major\n", DC_GWA_TABLE_X_CUT, worst);
+  CHECK(worst < 2.4e-16);
+}
+
 static void bench(void)
 {
   dc_gwa_table_pair p0, p;
@@ -322,6 +348,7 @@ int main(void)
   test_circle();
   test_kn_difference();
   test_w_zero_domain_nan();
+  test_cut();
   bench();
   return check_summary("gw_rough_adhesive_elliptic");
 }
