@@ -139,7 +139,7 @@ public:
       return;
     }
 #endif
-    adhesion(sidata, sidata.deltan, i_forces, j_forces);
+    if (const dc_gwa_table_pair *p = acting(sidata, sidata.deltan)) adhesion(sidata, *p, sidata.deltan, i_forces, j_forces);
   }
 
   /* Apart: the highest summits touch (loading) or the attached ones pull
@@ -148,21 +148,12 @@ public:
   {
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
-    if (atom->superquadric_flag) {
-      const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
-      if (p.sigma == 0.0) return;
-      /* untouched: the force starts 8 sigma apart; touched: anywhere in the neighbour list */
-      const double *h = &sidata.contact_history[history_offset];
-      const double r0 = reachRadius(sidata);
-      const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;
-      double delta, vn;
-      if (!gap.closeOverlap(lmp, sidata, range, delta, vn)) return;
-      if (adhesionSuperquadric(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
-      return;
-    }
+    if (atom->superquadric_flag) return closeSuperquadric(sidata, i_forces, j_forces);
 #endif
+    /* inline up to the apart test: most pairs in a polydisperse packing stop there */
     const double delta = closeSphereOverlapAgain(scdata);
-    if (adhesion(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
+    if (const dc_gwa_table_pair *p = acting(sidata, delta))
+      if (adhesion(sidata, *p, delta, i_forces, j_forces)) sidata.has_force_update = true;
   }
 
   void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
@@ -171,6 +162,22 @@ public:
 
 private:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
+  /* surfacesClose for superquadrics: the overlap from the gap, measured
+     out to 8 sigma for an untouched pair, anywhere in the neighbour list
+     for a touched one. */
+  __attribute__((noinline)) void closeSuperquadric(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                   ForceData &j_forces)
+  {
+    const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
+    if (p.sigma == 0.0) return;
+    const double *h = &sidata.contact_history[history_offset];
+    const double r0 = reachRadius(sidata);
+    const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;
+    double delta, vn;
+    if (!gap.closeOverlap(lmp, sidata, range, delta, vn)) return;
+    if (adhesionSuperquadric(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
+  }
+
   /* A superquadric contact at overlap delta: the elliptic summits of its
      relative radii; false when no force acts. */
   bool adhesionSuperquadric(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
@@ -205,18 +212,24 @@ private:
   }
 #endif
 
-  /* Applies the adhesive force at overlap delta; false when none acts.
-     Inline in both callers: it runs once per contact and step. */
-  __attribute__((always_inline)) inline bool adhesion(SurfacesIntersectData &sidata, double delta,
-                                                      ForceData &i_forces, ForceData &j_forces)
+  /* A sphere pair's table set-up, or NULL where no force acts at overlap
+     delta: a smooth pair, or an untouched one apart (its flag cleared). */
+  const dc_gwa_table_pair *acting(SurfacesIntersectData &sidata, double delta)
   {
-    const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
-    const dc_gwa_table_pair &p = pairs[k];
-    if (p.sigma == 0.0) return false;   /* a smooth pair */
+    const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
+    if (p.sigma == 0.0) return NULL;   /* a smooth pair */
     if (dc_gwa_table_apart(&p, delta, &sidata.contact_history[history_offset])) {
       if (sidata.contact_flags) *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
-      return false;
+      return NULL;
     }
+    return &p;
+  }
+
+  /* Applies the adhesive force of pair p at overlap delta (acting); false
+     when none acts. */
+  __attribute__((noinline)) bool adhesion(SurfacesIntersectData &sidata, const dc_gwa_table_pair &p, double delta,
+                                          ForceData &i_forces, ForceData &j_forces)
+  {
     const double R = sphereEffectiveRadius(sidata);
     double scratch[DC_GWA_TABLE_HISTORY_NFIELDS];
     double *h = history(sidata, scratch);
