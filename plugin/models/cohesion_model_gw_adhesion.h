@@ -135,7 +135,8 @@ public:
                        "to a mesh for superquadrics, so their summits pull only while the surfaces touch, not "
                        "before touch or after they part (primitive walls and pairs have the whole law); warned once");
       }
-      adhesionSuperquadric(sidata, sidata.deltan, i_forces, j_forces);
+      if (const dc_gwa_table_pair *p = acting(sidata, sidata.deltan))
+        adhesionSuperquadric(sidata, *p, sidata.deltan, i_forces, j_forces);
       return;
     }
 #endif
@@ -175,19 +176,15 @@ private:
     const double range = h[0] != 0.0 ? (neighbor->contactDistanceFactor - 1.0) * r0 : DC_GWA_TABLE_X_CUT * p.sigma;
     double delta, vn;
     if (!gap.closeOverlap(lmp, sidata, range, delta, vn)) return;
-    if (adhesionSuperquadric(sidata, delta, i_forces, j_forces)) sidata.has_force_update = true;
+    if (acting(sidata, delta) && adhesionSuperquadric(sidata, p, delta, i_forces, j_forces))
+      sidata.has_force_update = true;
   }
 
-  /* A superquadric contact at overlap delta: the elliptic summits of its
-     relative radii; false when no force acts. */
-  bool adhesionSuperquadric(SurfacesIntersectData &sidata, double delta, ForceData &i_forces, ForceData &j_forces)
+  /* A superquadric contact of pair p at overlap delta (acting): the
+     elliptic summits of its relative radii; false when no force acts. */
+  bool adhesionSuperquadric(SurfacesIntersectData &sidata, const dc_gwa_table_pair &p, double delta,
+                            ForceData &i_forces, ForceData &j_forces)
   {
-    const dc_gwa_table_pair &p = pairs[sidata.itype * (ntypes + 1) + sidata.jtype];
-    if (p.sigma == 0.0) return false;
-    if (dc_gwa_table_apart(&p, delta, &sidata.contact_history[history_offset])) {
-      if (sidata.contact_flags) *sidata.contact_flags &= ~CONTACT_COHESION_MODEL;
-      return false;
-    }
     double R_major, R_minor;
     curvature.relativeRadii(lmp, sidata, R_major, R_minor, "gw_adhesion");
     dc_gwa_table_radius rad;
@@ -212,7 +209,7 @@ private:
   }
 #endif
 
-  /* A sphere pair's table set-up, or NULL where no force acts at overlap
+  /* The pair's table set-up, or NULL where no force acts at overlap
      delta: a smooth pair, or an untouched one apart (its flag cleared). */
   const dc_gwa_table_pair *acting(SurfacesIntersectData &sidata, double delta)
   {
