@@ -63,7 +63,7 @@ int dc_gwa_table_pair_init(double Estar, double w, double sigma, double n_asp, d
 }
 
 /* 2^(j/32), j < 32, rounded from 40 digits */
-static const double exp2_32[32] = {
+const double dc_gwa_exp2_32[32] = {
   1.0,
   1.0218971486541166,
   1.0442737824274138,
@@ -98,27 +98,6 @@ static const double exp2_32[32] = {
   1.9571441241754002
 
 };
-
-/* e^L for the table's L (< 0.5): 2^e 2^(j/32) e^r with k = 32 e + j the
-   nearest integer to 32 L/ln 2 and r = L - k ln2/32 in [-ln2/64, ln2/64]
-   (Cody-Waite: k ln2_hi/32 is exact, ln2_hi having 32 bits), e^r by its
-   Taylor polynomial of degree 6 (truncation below 4e-18 relative); within
-   2 ulp of exp. L at or below -708 (subnormal results), above 709 or NaN:
-   the library's exp. */
-static ALWAYS_INLINE double exp_table(double L)
-{
-  if (!(L > -708.0 && L < 709.0)) return exp(L);
-  const double shifter = 0x1.8p52;
-  const double kd = (L * (32.0 / 0.6931471805599453) + shifter) - shifter;
-  const double r = (L - kd * (6.9314718036912382e-01 / 32)) - kd * (1.9082149292705877e-10 / 32);
-  const double r2 = r * r;
-  const double p = 1.0 + r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * ((1.0 / 24 + r * (1.0 / 120)) + r2 * (1.0 / 720)));
-  const int k = (int)kd;
-  const uint64_t bits = (uint64_t)((k >> 5) + 1023) << 52;   /* floor(k/32): arithmetic shift */
-  double scale;
-  memcpy(&scale, &bits, sizeof scale);
-  return exp2_32[k & 31] * p * scale;
-}
 
 /* quintic step: 1 for z <= 0, 0 for z >= 1, and its derivative */
 static inline double step_down(double z, double *dz)
@@ -202,10 +181,9 @@ static inline void cell_cubic(double v0, double s0, double v1, double s1, double
 }
 
 /* A contact's cell cache (dc_gwa_table_contact's cell: which, then the
-   cubic): the key
-   of a cell, 1 + its place among the near then deep cells of branch b */
-#define CELL_KEY_NEAR(b, i) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + (i))
-#define CELL_KEY_DEEP(b, k) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + DC_GWA_TABLE_NNEAR + (k))
+   cubic): the key of a cell (near: DC_GWA_TABLE_CELL_KEY_NEAR) */
+#define CELL_KEY_NEAR(b, i) DC_GWA_TABLE_CELL_KEY_NEAR(b, i)
+#define CELL_KEY_DEEP(b, k) DC_GWA_TABLE_CELL_KEY_NEAR(b, DC_GWA_TABLE_NNEAR + (k))
 
 /* The contact's cell cache cc (NULL: none) for the cell of this key: its
    cubic when cc holds that cell; else NULL, with the cell to be formed in
@@ -380,7 +358,7 @@ static void reduced_any(int b, double x, const dc_gwa_table_eta *c, double *cc, 
   }
   double L, Lx;
   table_L(b, x, c, cc, &L, &Lx);
-  *G = -exp_table(L);
+  *G = -dc_gwa_exp(L);
   *Gx = *G * Lx;
   if (b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI) {
     double C, Cx;
@@ -400,7 +378,7 @@ static ALWAYS_INLINE void reduced(int b, double x, const dc_gwa_table_eta *c, do
       !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
     double L, Lx;
     near_interp(b, x, c, cc, &L, &Lx);
-    *G = -exp_table(L);
+    *G = -dc_gwa_exp(L);
     *Gx = *G * Lx;
     if (kc) kc[0] = kc[1] = 0.0;
     return;
@@ -606,12 +584,12 @@ int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table
   return DC_OK;
 }
 
-/* dc_gwa_table_step_contact for any contact (the radius set up from the
-   record: the same operations as dc_gwa_table_radius_init without the cube
-   root and the logarithm; the eta cell set up from the stored eta, clamped:
-   clamping again changes nothing, only if the step forms a cell) */
-static NOINLINE int step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta,
-                                     double *hist, dc_gwa_table_out *o)
+/* The radius set up from the record: the same operations as
+   dc_gwa_table_radius_init without the cube root and the logarithm; the
+   eta cell set up from the stored eta, clamped (clamping again changes
+   nothing), only if the step forms a cell. */
+int dc_gwa_table_step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
+                                  dc_gwa_table_out *o)
 {
   dc_gwa_table_radius r;
   r.R = c->R;
@@ -623,48 +601,6 @@ static NOINLINE int step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_co
   r.cell.j = -1;
   r.ell.on = 0;   /* circular summits */
   return step(p, &r, c->cell, delta, hist, o);
-}
-
-int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
-                              dc_gwa_table_out *o)
-{
-  /* A settled contact: touched, wholly on one branch, in the near cell it
-     kept, above the blend and without the kink term. The operations of
-     step() on that path, in its order (the same bits; the fuzz and the
-     unit test compare), without its set-up; anything else (non-finite
-     input too) takes step_contact_any. */
-  if (hist[0] == 1.0 && fabs(hist[1]) <= DBL_MAX) {
-    const double dmax = delta > hist[1] ? delta : hist[1];
-    const double xi = (dmax - delta) / c->db;
-    int b;
-    double x = -delta * p->inv_sigma;
-    if (!(xi > 0.0)) b = DC_GW_LOADING;
-    else if (xi >= 1.0) { b = DC_GW_UNLOADING; x -= c->db * p->inv_sigma; }
-    else b = -1;
-    if (b >= 0 && x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
-        !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
-      const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
-      int i = (int)cx;
-      if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
-      if (c->cell[0] == CELL_KEY_NEAR(b, i)) {
-        double L, Lc;
-        cubic_eval(c->cell + 1, cx - i, &L, &Lc);
-        const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
-        const double G = -exp_table(L), Gx = G * Lx;
-        const double Fs = p->F_coef * c->R;
-        const double F = Fs * G, kn = -Fs * Gx * p->inv_sigma;
-        if (isfinite(F) && isfinite(kn)) {
-          hist[0] = 1.0;
-          hist[1] = dmax;
-          o->F = F;
-          o->kn = kn;
-          o->weight = b == DC_GW_UNLOADING ? 1.0 : 0.0;
-          return DC_OK;
-        }
-      }
-    }
-  }
-  return step_contact_any(p, c, delta, hist, o);
 }
 
 int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double *hist, dc_gwa_table_out *o)

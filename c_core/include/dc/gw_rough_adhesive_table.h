@@ -119,8 +119,13 @@
 #ifndef DC_GW_ROUGH_ADHESIVE_TABLE_H
 #define DC_GW_ROUGH_ADHESIVE_TABLE_H
 
+#include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 #include "dc/contract.h"
+#include "dc/gw_rough_adhesive.h"
+#include "dc/status.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -489,12 +494,87 @@ extern const dc_history_field dc_gwa_table_contact_history[DC_GWA_TABLE_CONTACT_
    kept. w = 0: only c->R is set (the rest 0). */
 int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_contact *c);
 
+/* The key of a contact's kept cell (dc_gwa_table_contact's cell[0]): 1 +
+   the cell's place among branch b's near cells (i < NNEAR), then its deep
+   cells (NNEAR + k - K_MIN). */
+#define DC_GWA_TABLE_CELL_KEY_NEAR(b, i) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + (i))
+
+/* 2^(j/32), j < 32 (dc_gwa_exp) */
+extern const double dc_gwa_exp2_32[32];
+
+/* e^L for the table's L (< 0.5): 2^e 2^(j/32) e^r with k = 32 e + j the
+   nearest integer to 32 L/ln 2 and r = L - k ln2/32 in [-ln2/64, ln2/64]
+   (Cody-Waite: k ln2_hi/32 is exact, ln2_hi having 32 bits), e^r by its
+   Taylor polynomial of degree 6 (truncation below 4e-18 relative); within
+   2 ulp of exp. L at or below -708 (subnormal results), above 709 or NaN:
+   the library's exp. */
+static inline double dc_gwa_exp(double L)
+{
+  if (!(L > -708.0 && L < 709.0)) return exp(L);
+  const double shifter = 0x1.8p52;
+  const double kd = (L * (32.0 / 0.6931471805599453) + shifter) - shifter;
+  const double r = (L - kd * (6.9314718036912382e-01 / 32)) - kd * (1.9082149292705877e-10 / 32);
+  const double r2 = r * r;
+  const double q = 1.0 + r + r2 * ((0.5 + r * (1.0 / 6)) + r2 * ((1.0 / 24 + r * (1.0 / 120)) + r2 * (1.0 / 720)));
+  const int k = (int)kd;
+  const uint64_t bits = (uint64_t)((k >> 5) + 1023) << 52;   /* floor(k/32): arithmetic shift */
+  double scale;
+  memcpy(&scale, &bits, sizeof scale);
+  return dc_gwa_exp2_32[k & 31] * q * scale;
+}
+
+/* dc_gwa_table_step_contact off its inline path (any contact) */
+int dc_gwa_table_step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
+                                  dc_gwa_table_out *o);
+
 /* dc_gwa_table_step_radius for a contact whose record c was set up by
    dc_gwa_table_contact_init (for the contact's R and this pair): the same
    bits; the cell kept in c is read when the step lands in it (a settled contact)
-   and otherwise replaced by the cell the step formed. */
-int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
-                              dc_gwa_table_out *o);
+   and otherwise replaced by the cell the step formed.
+   Inline, a settled contact: touched, wholly on one branch, in the near
+   cell it kept, above the blend and without the kink term; the operations
+   of the full step on that path, in its order (the same bits; the fuzz and
+   the unit test compare). xi = (dmax - delta)/db is compared without the
+   division: for db > 0 and dmax - delta >= 0, xi >= 1 exactly when
+   dmax - delta >= db (the quotient of a number below db rounds below 1).
+   Anything else (non-finite input too) takes dc_gwa_table_step_contact_any. */
+static inline int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta,
+                                            double *hist, dc_gwa_table_out *o)
+{
+  if (hist[0] == 1.0 && fabs(hist[1]) <= DBL_MAX && c->db > 0.0) {
+    const double dmax = delta > hist[1] ? delta : hist[1];
+    const double du = dmax - delta;
+    int b;
+    double x = -delta * p->inv_sigma;
+    if (!(du > 0.0)) b = DC_GW_LOADING;
+    else if (du >= c->db) { b = DC_GW_UNLOADING; x -= c->db * p->inv_sigma; }
+    else b = -1;
+    if (b >= 0 && x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
+        !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
+      const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
+      int i = (int)cx;
+      if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
+      if (c->cell[0] == DC_GWA_TABLE_CELL_KEY_NEAR(b, i)) {
+        const double t = cx - i, *k = c->cell + 1;
+        const double L = ((k[3] * t + k[2]) * t + k[1]) * t + k[0];
+        const double Lc = (3.0 * k[3] * t + 2.0 * k[2]) * t + k[1];
+        const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
+        const double G = -dc_gwa_exp(L), Gx = G * Lx;
+        const double Fs = p->F_coef * c->R;
+        const double F = Fs * G, kn = -Fs * Gx * p->inv_sigma;
+        if (isfinite(F) && isfinite(kn)) {
+          hist[0] = 1.0;
+          hist[1] = dmax;
+          o->F = F;
+          o->kn = kn;
+          o->weight = b == DC_GW_UNLOADING ? 1.0 : 0.0;
+          return DC_OK;
+        }
+      }
+    }
+  }
+  return dc_gwa_table_step_contact_any(p, c, delta, hist, o);
+}
 
 /* Reach (dc_gwa_table_reach) from a contact's record: the same bits. */
 static inline double dc_gwa_table_contact_reach(const dc_gwa_table_pair *p, const dc_gwa_table_contact *c)
