@@ -13,10 +13,8 @@
 
 #if defined(__GNUC__)
 #define ALWAYS_INLINE inline __attribute__((always_inline))
-#define NOINLINE __attribute__((noinline))
 #else
 #define ALWAYS_INLINE inline
-#define NOINLINE
 #endif
 
 /* delta_break / delta_c of a circular JKR summit: -(3/8) pi^4/3 (tested
@@ -181,8 +179,7 @@ static inline void cell_cubic(double v0, double s0, double v1, double s1, double
 }
 
 /* A contact's cell cache (dc_gwa_table_contact's cell: which, then the
-   cubic): the key of a cell (near: DC_GWA_TABLE_CELL_KEY_NEAR) */
-#define CELL_KEY_NEAR(b, i) DC_GWA_TABLE_CELL_KEY_NEAR(b, i)
+   cubic): the key of deep cell k (near cells: DC_GWA_TABLE_CELL_KEY_NEAR) */
 #define CELL_KEY_DEEP(b, k) DC_GWA_TABLE_CELL_KEY_NEAR(b, DC_GWA_TABLE_NNEAR + (k))
 
 /* The contact's cell cache cc (NULL: none) for the cell of this key: its
@@ -203,7 +200,7 @@ static ALWAYS_INLINE const double *cell_kept(double *cc, double key, double **tm
    without one) */
 static ALWAYS_INLINE const double *near_cell(int b, int i, const dc_gwa_table_eta *c, double *cc, double *tmp)
 {
-  const double *kept = cell_kept(cc, CELL_KEY_NEAR(b, i), &tmp, &c);
+  const double *kept = cell_kept(cc, DC_GWA_TABLE_CELL_KEY_NEAR(b, i), &tmp, &c);
   if (kept) return kept;
   const double dx = 1.0 / DC_GWA_TABLE_X_PER_UNIT;
   double v0, d0, v1, d1;
@@ -227,13 +224,6 @@ static inline const double *deep_cell(int b, int k, const dc_gwa_table_eta *c, d
   return tmp;
 }
 
-/* the cubic of a cell at t: value and d/dt */
-static ALWAYS_INLINE void cubic_eval(const double *c, double t, double *v, double *dv)
-{
-  *v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
-  *dv = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
-}
-
 /* near region: L and dL/dx at x in [X_LO, X_HI] */
 static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c, double *cc,
                                        double *L, double *Lx)
@@ -243,7 +233,7 @@ static ALWAYS_INLINE void near_interp(int b, double x, const dc_gwa_table_eta *c
   if (i < 0) i = 0;
   if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
   double tmp[4], Lc;
-  cubic_eval(near_cell(b, i, c, cc, tmp), cx - i, L, &Lc);
+  dc_gwa_cubic(near_cell(b, i, c, cc, tmp), cx - i, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
 }
 
@@ -260,7 +250,7 @@ static void deep_interp(int b, double x, const dc_gwa_table_eta *c, double *cc, 
   if (m < sh) m = sh;
   if (m > DC_GWA_TABLE_NDEEP - 2) m = DC_GWA_TABLE_NDEEP - 2;
   double tmp[4], Lc;
-  cubic_eval(deep_cell(b, m, c, cc, tmp), cu - m, L, &Lc);
+  dc_gwa_cubic(deep_cell(b, m, c, cc, tmp), cu - m, L, &Lc);
   *Lx = Lc * DC_GWA_TABLE_U_PER_UNIT / x;
 }
 

@@ -499,6 +499,13 @@ int dc_gwa_table_contact_init(const dc_gwa_table_pair *p, double R, dc_gwa_table
    cells (NNEAR + k - K_MIN). */
 #define DC_GWA_TABLE_CELL_KEY_NEAR(b, i) (1 + (b) * (DC_GWA_TABLE_NNEAR + DC_GWA_TABLE_NDEEP) + (i))
 
+/* A kept cell's cubic c0 + c1 t + c2 t^2 + c3 t^3 at t: value and d/dt */
+static inline void dc_gwa_cubic(const double *c, double t, double *v, double *dv)
+{
+  *v = ((c[3] * t + c[2]) * t + c[1]) * t + c[0];
+  *dv = (3.0 * c[3] * t + 2.0 * c[2]) * t + c[1];
+}
+
 /* 2^(j/32), j < 32 (dc_gwa_exp) */
 extern const double dc_gwa_exp2_32[32];
 
@@ -555,9 +562,8 @@ static inline int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_t
       int i = (int)cx;
       if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
       if (c->cell[0] == DC_GWA_TABLE_CELL_KEY_NEAR(b, i)) {
-        const double t = cx - i, *k = c->cell + 1;
-        const double L = ((k[3] * t + k[2]) * t + k[1]) * t + k[0];
-        const double Lc = (3.0 * k[3] * t + 2.0 * k[2]) * t + k[1];
+        double L, Lc;
+        dc_gwa_cubic(c->cell + 1, cx - i, &L, &Lc);
         const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
         const double G = -dc_gwa_exp(L), Gx = G * Lx;
         const double Fs = p->F_coef * c->R;
