@@ -57,7 +57,8 @@ class CohesionModel<COHESION_GW_ADHESION> : public CohesionModelBase
 {
 public:
   CohesionModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), maxRadiusFactor(100.0)
+    CohesionModelBase(lmp, hsetup, c), history_offset(-1), contact_offset(-1), ntypes(0), reachEveryStep(true),
+    maxRadiusFactor(100.0)
   {
     for (int k = 0; k < DC_GWA_TABLE_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_gwa_table_history[k].name, dc_gwa_table_history[k].flips ? "1" : "0");
@@ -98,8 +99,10 @@ public:
 #endif
   }
 
+  /* at each run's start (LIGGGHTS' init) */
   void connectToProperties(PropertyRegistry &registry)
   {
+    reachEveryStep = true;   /* the contact distance may have changed */
     const char *caller = "cohesion_model gw_adhesion";
     registry.registerProperty("workOfAdhesion", &dcCreateWorkOfAdhesion, caller);
     registry.registerProperty("surfaceRoughnessType", &dcCreateRoughnessType, caller);
@@ -158,7 +161,8 @@ public:
   }
 
   void beginPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
-  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
+  /* after a run's first pass over the pairs: settled contacts need no reach check (adhesion) */
+  void endPass(SurfacesIntersectData &, ForceData &, ForceData &) { reachEveryStep = false; }
   inline void endSurfacesIntersect(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
@@ -243,9 +247,19 @@ private:
       const int st = dc_gwa_table_contact_init(&p, R, con);
       if (st != DC_OK) fail("radius %g: %s", R, dc_status_str(st));
     }
-    if (h[0] != 0.0) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
+    /* the reach is the record's and the contact distance the run's: a
+       touched contact is checked after each step that left the short path
+       (a settled contact formed its cell in such a step, touched: its
+       short path steps need no check) and at every step of a run's first
+       pass, and of every wall pass (walls have no endPass) */
     dc_gwa_table_out o;
-    const int st = dc_gwa_table_step_contact(&p, con, delta, h, &o);
+    int st = DC_OK;
+    if (dc_gwa_table_step_settled(&p, con, delta, h, &o)) {
+      if (reachEveryStep) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
+    } else {
+      st = dc_gwa_table_step_contact_any(&p, con, delta, h, &o);
+      if (st == DC_OK && h[0] != 0.0) checkReach(sidata, dc_gwa_table_contact_reach(&p, con));
+    }
     return finish(sidata, st, delta, R, h, o, i_forces, j_forces);
   }
 
@@ -296,6 +310,7 @@ private:
   }
 
   int history_offset, contact_offset, ntypes;
+  bool reachEveryStep;
   double maxRadiusFactor;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature;

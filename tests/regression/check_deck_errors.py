@@ -11,7 +11,8 @@ lost error), coincident spheres, a
 sphere centre on a wall, a position that is not a number, youngsModulus <= 0 with
 soft_particles, a property value that is not a finite number, write_data
 with superquadrics (read back) and with contact history (a warning); a
-contact beyond the range of Hertz theory (a warning).
+contact beyond the range of Hertz theory (a warning); attached rough adhesive
+summits resumed from a restart with too small a contact distance.
 Usage: check_deck_errors.py WORKDIR"""
 import os
 import sys
@@ -98,6 +99,22 @@ for model, prop in (("jamari_ep", "props_hardness"), ("jkr_elliptic", "props_jkr
     warn = [l for l in out4.splitlines() if "where Hertz theory no longer holds" in l]
     c.true(code4 == 0 and len(set(warn)) == 1 and "Normal model " + model in warn[0],
            "%s beyond the Hertz range: one warning (%s)" % (model, warn[0].strip() if warn else "none"))
+# attached rough adhesive summits resumed from a restart with a contact
+# distance too small for them: the pair (0.4 mm apart, attached, settled in
+# its table cell) is checked in the run's first pass, not only when it
+# leaves its cell
+rough = dict(ok, model="gw_rough tangential history cohesion gw_adhesion", props=props("props_rough_adhesive"),
+             settings="gwElliptic on")
+d = os.path.join(work, "reach_restart")
+code5, out5 = run("deck_errors/in.sphere_base", d, variables=dict(rough, x0="0.0012", cdf="1.3", restart=1), tag="first",
+                  expect_error=True)
+code6, out6 = run("deck_errors/in.sphere_resume", d, variables=dict(rough, cdf="1.25"), tag="resumed",
+                  expect_error=True)
+err = [l for l in out6.splitlines() if "ERROR" in l]
+c.true(code5 == 0 and code6 != 0 and any("attached summits pull up to 0.000566569 m apart: set neigh_modify "
+                                         "contact_distance_factor >= 1.283" in l for l in err),
+       "attached rough adhesive summits resumed with contact distance 1.25 (first run exit %d): exit %d, error line: %s"
+       % (code5, code6, err[0].strip() if err else "(none)"))
 # the same base deck with full input runs
 code, out = run("deck_errors/in.sphere_base", os.path.join(work, "good"), variables=dict(ok, model="hertz_elliptic tangential history"), tag="ok", expect_error=True)
 c.true(code == 0, "complete deck runs (exit %d)" % code)

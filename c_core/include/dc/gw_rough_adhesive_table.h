@@ -530,55 +530,61 @@ static inline double dc_gwa_exp(double L)
   return dc_gwa_exp2_32[k & 31] * q * scale;
 }
 
-/* dc_gwa_table_step_contact off its inline path (any contact) */
+/* dc_gwa_table_step_contact for any contact (below) */
 int dc_gwa_table_step_contact_any(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta, double *hist,
                                   dc_gwa_table_out *o);
 
+/* The step of a settled contact: touched, wholly on one branch, in the
+   near cell it kept (c), above the blend and without the kink term; 1 when
+   the contact is one (the step done: hist and *o as
+   dc_gwa_table_step_contact), else 0 with nothing changed (the caller
+   takes dc_gwa_table_step_contact_any). The operations of the full step on
+   that path, in its order (the same bits; the fuzz and the unit test
+   compare). xi = (dmax - delta)/db is compared without the division: for
+   db > 0 and dmax - delta >= 0, xi >= 1 exactly when dmax - delta >= db
+   (the quotient of a number below db rounds below 1). Non-finite input
+   returns 0. */
+static inline int dc_gwa_table_step_settled(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta,
+                                            double *hist, dc_gwa_table_out *o)
+{
+  if (!(hist[0] == 1.0 && fabs(hist[1]) <= DBL_MAX && c->db > 0.0)) return 0;
+  const double dmax = delta > hist[1] ? delta : hist[1];
+  const double du = dmax - delta;
+  int b;
+  double x = -delta * p->inv_sigma;
+  if (!(du > 0.0)) b = DC_GW_LOADING;
+  else if (du >= c->db) { b = DC_GW_UNLOADING; x -= c->db * p->inv_sigma; }
+  else return 0;
+  if (!(x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI) ||
+      (b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI))
+    return 0;
+  const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
+  int i = (int)cx;
+  if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
+  if (c->cell[0] != DC_GWA_TABLE_CELL_KEY_NEAR(b, i)) return 0;
+  double L, Lc;
+  dc_gwa_cubic(c->cell + 1, cx - i, &L, &Lc);
+  const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
+  const double G = -dc_gwa_exp(L), Gx = G * Lx;
+  const double Fs = p->F_coef * c->R;
+  const double F = Fs * G, kn = -Fs * Gx * p->inv_sigma;
+  if (!(isfinite(F) && isfinite(kn))) return 0;
+  hist[0] = 1.0;
+  hist[1] = dmax;
+  o->F = F;
+  o->kn = kn;
+  o->weight = b == DC_GW_UNLOADING ? 1.0 : 0.0;
+  return 1;
+}
+
 /* dc_gwa_table_step_radius for a contact whose record c was set up by
    dc_gwa_table_contact_init (for the contact's R and this pair): the same
-   bits; the cell kept in c is read when the step lands in it (a settled contact)
-   and otherwise replaced by the cell the step formed.
-   Inline, a settled contact: touched, wholly on one branch, in the near
-   cell it kept, above the blend and without the kink term; the operations
-   of the full step on that path, in its order (the same bits; the fuzz and
-   the unit test compare). xi = (dmax - delta)/db is compared without the
-   division: for db > 0 and dmax - delta >= 0, xi >= 1 exactly when
-   dmax - delta >= db (the quotient of a number below db rounds below 1).
-   Anything else (non-finite input too) takes dc_gwa_table_step_contact_any. */
+   bits; the cell kept in c is read when the step lands in it (a settled
+   contact, inline) and otherwise replaced by the cell the step formed. */
 static inline int dc_gwa_table_step_contact(const dc_gwa_table_pair *p, dc_gwa_table_contact *c, double delta,
                                             double *hist, dc_gwa_table_out *o)
 {
-  if (hist[0] == 1.0 && fabs(hist[1]) <= DBL_MAX && c->db > 0.0) {
-    const double dmax = delta > hist[1] ? delta : hist[1];
-    const double du = dmax - delta;
-    int b;
-    double x = -delta * p->inv_sigma;
-    if (!(du > 0.0)) b = DC_GW_LOADING;
-    else if (du >= c->db) { b = DC_GW_UNLOADING; x -= c->db * p->inv_sigma; }
-    else b = -1;
-    if (b >= 0 && x >= DC_GWA_TABLE_BLEND_HI && x <= DC_GWA_TABLE_X_HI &&
-        !(b == DC_GW_UNLOADING && x < DC_GWA_KINK_W_HI && c->eta < DC_GWA_KINK_K_HI)) {
-      const double cx = (x - DC_GWA_TABLE_X_LO) * DC_GWA_TABLE_X_PER_UNIT;
-      int i = (int)cx;
-      if (i > DC_GWA_TABLE_NNEAR - 1) i = DC_GWA_TABLE_NNEAR - 1;
-      if (c->cell[0] == DC_GWA_TABLE_CELL_KEY_NEAR(b, i)) {
-        double L, Lc;
-        dc_gwa_cubic(c->cell + 1, cx - i, &L, &Lc);
-        const double Lx = Lc * DC_GWA_TABLE_X_PER_UNIT;
-        const double G = -dc_gwa_exp(L), Gx = G * Lx;
-        const double Fs = p->F_coef * c->R;
-        const double F = Fs * G, kn = -Fs * Gx * p->inv_sigma;
-        if (isfinite(F) && isfinite(kn)) {
-          hist[0] = 1.0;
-          hist[1] = dmax;
-          o->F = F;
-          o->kn = kn;
-          o->weight = b == DC_GW_UNLOADING ? 1.0 : 0.0;
-          return DC_OK;
-        }
-      }
-    }
-  }
+  if (dc_gwa_table_step_settled(p, c, delta, hist, o)) return DC_OK;
   return dc_gwa_table_step_contact_any(p, c, delta, hist, o);
 }
 
