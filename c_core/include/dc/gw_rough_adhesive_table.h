@@ -105,10 +105,10 @@
    19 ns against 30 ns with the radius kept (unit test, tau 36, one
    cell). A settled contact (touched, wholly on one branch, in the near
    cell it kept, above the blend, no kink term) takes a short path
-   without the set-up, inline in the caller (dc_gwa_table_step_contact
+   without the set-up, inline in the caller (dc_gwa_table_step_settled
    below): in the monodisperse bench scene (callgrind, 10000 steps, tau ~
    36) 91 % of the steps; the wrapper's call with the step inline takes
-   248 instructions on average (5.2 G over 21.1 M calls; 256 with the
+   232 instructions on average (4.9 G over 21.1 M calls; 256 with the
    step out of line, of which the step 175 on average and 216 before
    the short path);
    polydisperse spheres: the record gave the whole run 17 % fewer
