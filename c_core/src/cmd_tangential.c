@@ -2,6 +2,7 @@
    full load history (dc/cmd_tangential.h, review Eqs. 56-77, 85). */
 #include "dc/cmd_tangential.h"
 #include "dc/elliptic_integrals.h"
+#include "dc/inline.h"
 #include "dc/status.h"
 #include <float.h>
 #include <math.h>
@@ -166,16 +167,9 @@ typedef struct {
 
 static inline double max2(double a, double b) { return a > b ? a : b; }
 
-/* 0 for a finite x, NaN otherwise; sums of them never overflow */
-static inline double nf(double x) { return x - x; }
 
 /* The profile functions below take the number of components (3: force,
    1: twist) as a constant through two instantiations of profile_step. */
-#if defined(__GNUC__)
-#define DC_INLINE static inline __attribute__((always_inline))
-#else
-#define DC_INLINE static inline
-#endif
 
 /* weight of v1 in the mean of a piece: int = (x1 - x0) [(1 - w) v0 + w v1] */
 static inline double piece_w(double x0, double x1)
@@ -590,29 +584,30 @@ static inline void project_keep(const double *b, double *v)
   for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
 }
 
-int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
-                const double n[3], const double du[3], double dphi, double dt,
-                dc_cmd_state *h, dc_cmd_out *out)
+/* ------------------------------------------------------------------ */
+/* The step in parts (each inlined: one function's code).              */
+
+/* Inputs finite and in their domain; the stored piece counts in *ns, *nt
+   (nt 0 without twisting, whose part of h is neither read nor written). */
+DC_INLINE int cmd_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const double n[3],
+                        const double du[3], double dphi, double dt, const dc_cmd_state *h, int *ns_out, int *nt_out)
 {
-  /* ---- inputs: finiteness and domain */
   const double a = patch->a, b = patch->b, Fb = patch->F_bound, mu = p->mu;
-  double chk = ((nf(a) + nf(b)) + (nf(Fb) + nf(patch->formed))) +
-               ((nf(patch->axis[0]) + nf(patch->axis[1])) + (nf(patch->axis[2]) + nf(mu))) +
-               ((nf(n[0]) + nf(n[1])) + (nf(n[2]) + nf(du[0]))) + ((nf(du[1]) + nf(du[2])) + (nf(m->s0) + nf(m->s1))) +
-               ((nf(h->a_prev) + nf(h->nseg)) + nf(h->n_prev[0])) + (nf(h->n_prev[1]) + nf(h->n_prev[2]));
-  if (p->twisting) chk += nf(dphi) + nf(h->nseg_t);
-  if (p->dissipation) chk += nf(dt) + nf(p->t_visc);
+  double chk = ((dc_nf(a) + dc_nf(b)) + (dc_nf(Fb) + dc_nf(patch->formed))) +
+               ((dc_nf(patch->axis[0]) + dc_nf(patch->axis[1])) + (dc_nf(patch->axis[2]) + dc_nf(mu))) +
+               ((dc_nf(n[0]) + dc_nf(n[1])) + (dc_nf(n[2]) + dc_nf(du[0]))) + ((dc_nf(du[1]) + dc_nf(du[2])) + (dc_nf(m->s0) + dc_nf(m->s1))) +
+               ((dc_nf(h->a_prev) + dc_nf(h->nseg)) + dc_nf(h->n_prev[0])) + (dc_nf(h->n_prev[1]) + dc_nf(h->n_prev[2]));
+  if (p->twisting) chk += dc_nf(dphi) + dc_nf(h->nseg_t);
+  if (p->dissipation) chk += dc_nf(dt) + dc_nf(p->t_visc);
   if (chk != 0.0) return DC_EDOM;   /* NaN: an input is not finite */
   if (!(mu >= 0.0 && p->t_visc >= 0.0 && (p->dissipation == 0 || p->dissipation == 1) &&
         (p->twisting == 0 || p->twisting == 1) && pair_ok(m) && Fb >= 0.0 && b >= 0.0 && a >= b &&
         (a == 0.0 || b >= 1e-150 * a) && (!p->dissipation || dt > 0.0)))
     return DC_EDOM;
-  const double nn = dot3(n, n);
-  if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
-  /* without twisting the twist part of h (from nseg_t on) is neither read nor written;
-     the piece counts are range-checked as doubles before the conversion to
-     int (a corrupted count beyond int's range would make it undefined) and
-     must then be whole numbers */
+  if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
+  /* the piece counts are range-checked as doubles before the conversion
+     to int (a corrupted count beyond int's range would make it undefined)
+     and must then be whole numbers */
   if (!(h->nseg >= 0.0 && h->nseg <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
         (!p->twisting || (h->nseg_t >= 0.0 && h->nseg_t <= DC_CMD_MAX_SEG))))
     return DC_EDOM;
@@ -626,9 +621,9 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     double c0 = 0.0, c1 = 0.0, c2 = 0.0, xp = 0.0;
     for (int j = 0; j < ns; j++) {
       const dc_cmd_piece *q = &h->seg[j];
-      c0 += nf(q->u0[0]) + nf(q->u1[0]);
-      c1 += nf(q->u0[1]) + nf(q->u1[1]);
-      c2 += nf(q->u0[2]) + nf(q->u1[2]);
+      c0 += dc_nf(q->u0[0]) + dc_nf(q->u1[0]);
+      c1 += dc_nf(q->u0[1]) + dc_nf(q->u1[1]);
+      c2 += dc_nf(q->u0[2]) + dc_nf(q->u1[2]);
       order &= q->xi > xp;
       xp = q->xi;
     }
@@ -637,111 +632,129 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   }
   if (p->twisting)
     for (int j = 0; j < nt; j++) {
-      chk += nf(h->seg_t[j].xi) + (nf(h->seg_t[j].t0) + nf(h->seg_t[j].t1));
+      chk += dc_nf(h->seg_t[j].xi) + (dc_nf(h->seg_t[j].t0) + dc_nf(h->seg_t[j].t1));
       order &= h->seg_t[j].xi > (j ? h->seg_t[j - 1].xi : 0.0) && h->seg_t[j].xi <= 1.0;
     }
   if (chk != 0.0 || !order) return DC_EDOM;
+  *ns_out = ns;
+  *nt_out = nt;
+  return DC_OK;
+}
 
-  const int elliptic = a > b;
-  const double axl = dot3(patch->axis, patch->axis);
-  if (elliptic && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
+/* The contact's frame: unit normal, Mindlin's no-slip stiffness along the
+   major axis (Eqs. 56-58 per unit s0, dc/mindlin.h), and the increment of
+   the stuck springs d = M du_t, M = diag(1, k_minor/k_major) in the axes. */
+typedef struct {
+  double nh[3];     /* unit normal */
+  double tnu;       /* s1/s0 of the pair */
+  double cm, rho;   /* major-axis compliance per unit s0; k_minor/k_major */
+  double ax[3];     /* unit major axis in the contact plane (ellipse) */
+  int ell;          /* an ellipse with its axis (el and ax set) */
+  dc_ellint el;     /* its elliptic integrals */
+  double k_major;   /* [N/m] */
+  double dut[3];    /* du less its normal part */
+  double d[3];      /* M dut */
+} cmd_frame;
 
-  /* ---- not formed, or no area: the history starts afresh */
-  if (patch->formed == 0.0 || a == 0.0) {
-    memset(h, 0, p->twisting ? sizeof *h : DC_CMD_FORCE_NFIELDS * sizeof(double));
-    memset(out, 0, sizeof *out);
-    return DC_OK;
-  }
-
-  /* ---- geometry: unit normal, stiffnesses, the map M of the increment */
-  const double in = 1.0 / sqrt(nn);
-  const double nh[3] = {n[0] * in, n[1] * in, n[2] * in};
-  const double tnu = m->s1 / m->s0;
-  double cm = (2.0 - tnu) * (M_PI / 4.0), rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
-  dc_ellint el;
-  const int ell = elliptic && axl > 0.0;
-  if (ell) {
+DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, const double n[3], const double du[3],
+                           double axl, cmd_frame *f)
+{
+  const double a = patch->a, b = patch->b;
+  const double nn = dot3(n, n), in = 1.0 / sqrt(nn);
+  for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
+  const double *nh = f->nh;
+  f->tnu = m->s1 / m->s0;
+  f->cm = (2.0 - f->tnu) * (M_PI / 4.0);
+  f->rho = 1.0;
+  f->ax[0] = f->ax[1] = f->ax[2] = 0.0;
+  f->ell = a > b && axl > 0.0;
+  if (f->ell) {
     const double g = b / a;
-    if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
+    if (dc_ellint_m1(g * g, &f->el) != DC_OK) return DC_EDOM;
     double cn;
-    axis_compliances(tnu, &el, &cm, &cn);
-    rho = cm / cn;   /* k_minor / k_major */
+    axis_compliances(f->tnu, &f->el, &f->cm, &cn);
+    f->rho = f->cm / cn;   /* k_minor / k_major */
     const double an = dot3(patch->axis, nh);
-    for (int k = 0; k < 3; k++) ax[k] = patch->axis[k] - an * nh[k];
-    const double al = norm_dir(3, ax, ax);
+    for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
+    const double al = norm_dir(3, f->ax, f->ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
   }
-  const double k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, cm);
+  f->k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, f->cm);
   const double dn = dot3(du, nh);
-  const double dut[3] = {du[0] - dn * nh[0], du[1] - dn * nh[1], du[2] - dn * nh[2]};
-  double d[3];
-  if (ell) {
-    const double da = (1.0 - rho) * dot3(ax, dut);
-    for (int k = 0; k < 3; k++) d[k] = rho * dut[k] + da * ax[k];
+  for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
+  if (f->ell) {
+    const double da = (1.0 - f->rho) * dot3(f->ax, f->dut);
+    for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
   } else {
-    for (int k = 0; k < 3; k++) d[k] = dut[k];
+    for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
   }
+  return DC_OK;
+}
 
-  /* ---- the stored force profile, turned with the plane */
-  const int fresh = !(h->a_prev > 0.0);
-  const double r = fresh ? 1.0 : h->a_prev / a;
-  dc_cmd_piece S[DC_CMD_MAX_SEG];
-  const int nsu = fresh ? 0 : ns;
-  const dc_cmd_piece *seg = h->seg;
-  if (nsu > 0) {
-    const double *np0 = h->n_prev;
-    const double c = dot3(np0, nh);
-    if (np0[0] != nh[0] || np0[1] != nh[1] || np0[2] != nh[2]) {
-      seg = S;
-      if (c > -0.999) {   /* turned straight from h into the copies */
-        const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
-                             np0[0] * nh[1] - np0[1] * nh[0]};
-        const double ic = 1.0 / (1.0 + c);
-        for (int j = 0; j < nsu; j++) {
-          S[j].xi = h->seg[j].xi;
-          turn(w, c, ic, nh, h->seg[j].u0, S[j].u0);
-          turn(w, c, ic, nh, h->seg[j].u1, S[j].u1);
-        }
-      } else {
-        memcpy(S, h->seg, sizeof(dc_cmd_piece) * nsu);
-        for (int j = 0; j < nsu; j++) {
-          project_keep(nh, S[j].u0);
-          project_keep(nh, S[j].u1);
-        }
-      }
+/* The stored force profile turned with the contact plane (the
+   three-dimensional rule): h's pieces where the normal has not moved, else
+   copies in S. */
+DC_INLINE const dc_cmd_piece *cmd_turned_profile(const dc_cmd_state *h, const double *nh, int nsu, dc_cmd_piece *S)
+{
+  const double *np0 = h->n_prev;
+  if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return h->seg;
+  const double c = dot3(np0, nh);
+  if (c > -0.999) {   /* turned straight from h into the copies */
+    const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
+                         np0[0] * nh[1] - np0[1] * nh[0]};
+    const double ic = 1.0 / (1.0 + c);
+    for (int j = 0; j < nsu; j++) {
+      S[j].xi = h->seg[j].xi;
+      turn(w, c, ic, nh, h->seg[j].u0, S[j].u0);
+      turn(w, c, ic, nh, h->seg[j].u1, S[j].u1);
+    }
+  } else {
+    memcpy(S, h->seg, sizeof(dc_cmd_piece) * nsu);
+    for (int j = 0; j < nsu; j++) {
+      project_keep(nh, S[j].u0);
+      project_keep(nh, S[j].u1);
     }
   }
+  return S;
+}
 
-  /* ---- force: Coulomb limits L0 (1 - xi^2) integrate to mu F_bound:
-     L0 = 3 mu F_b / (2 k_major) */
-  const double L0 = pq(0.75 / M_PI * cm, mu, Fb, m->s0, a, 1.0);
-  piece pf[MAXP];
+/* The force (Eqs. 59-71: the springs' profile stepped, F = k_major int u
+   dxi in the plane), its tangent stiffness along du (Eqs. 68, 70: theta k;
+   on an ellipse it depends on the direction), the dissipative force
+   (Eq. 85) and the clip onto mu F_bound. Returns the profile's piece
+   count (pieces in pf). */
+DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
+                        const dc_cmd_piece *seg, int nsu, double r, double dt, piece *pf, double *F, double *kt_out,
+                        double *stick_out)
+{
+  const double mu = p->mu, Fb = patch->F_bound;
+  const double *nh = f->nh;
+  /* Coulomb limits L0 (1 - xi^2) integrate to mu F_bound: L0 = 3 mu F_b / (2 k_major) */
+  const double L0 = pq(0.75 / M_PI * f->cm, mu, Fb, m->s0, patch->a, 1.0);
   double stick, I[3];
-  const int nfp = profile_step3(nsu, seg, r, d, L0, pf, &stick, I);
-  double F[3] = {k_major * I[0], k_major * I[1], k_major * I[2]};
+  const int nfp = profile_step3(nsu, seg, r, f->d, L0, pf, &stick, I);
+  for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
   {
     const double fn = dot3(F, nh);
     for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
   }
-  /* tangent stiffness along du (Eqs. 68, 70: theta k); on an ellipse it
-     depends on the direction */
-  double kt = stick * k_major;
-  if (ell) {
+  double kt = stick * f->k_major;
+  if (f->ell) {
     double dir[3];
-    double l = norm_dir(3, dut, dir);
+    double l = norm_dir(3, f->dut, dir);
     if (!(l > 0.0)) l = norm_dir(3, F, dir);
-    const double ea = dot3(dir, ax);
-    kt *= l > 0.0 ? rho + (1.0 - rho) * ea * ea : 0.5 * (1.0 + rho);
+    const double ea = dot3(dir, f->ax);
+    kt *= l > 0.0 ? f->rho + (1.0 - f->rho) * ea * ea : 0.5 * (1.0 + f->rho);
   }
   const double lim = mu * Fb;
   if (p->dissipation && stick > 0.0 && p->t_visc > 0.0) {
     /* Eq. 85: A_t (theta K0) d(delta)/dt */
-    const double f = p->t_visc / dt * stick * k_major;
+    const double fd = p->t_visc / dt * stick * f->k_major;
     double G[3];
-    for (int k = 0; k < 3; k++) G[k] = F[k] + f * d[k];
+    for (int k = 0; k < 3; k++) G[k] = F[k] + fd * f->d[k];
     if (isfinite(G[0]) && isfinite(G[1]) && isfinite(G[2])) {
       for (int k = 0; k < 3; k++) F[k] = G[k];
-    } else if (norm_dir(3, d, G) > 0.0) {   /* the viscous part dominates: at the limit along d */
+    } else if (norm_dir(3, f->d, G) > 0.0) {   /* the viscous part dominates: at the limit along d */
       for (int k = 0; k < 3; k++) F[k] = lim * G[k];
     }
   }
@@ -755,50 +768,60 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     if (!(f2 >= DBL_MIN && l2 <= DBL_MAX && f2 < (1.0 - 1e-14) * l2) && norm_dir(3, F, e) > lim)
       for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
+  *kt_out = kt;
+  *stick_out = stick;
+  return nfp;
+}
 
-  /* ---- twisting (Eq. 77; full slip 3/8 mu F a E) */
-  piece pt[MAXP];
-  int ntw = 0;
-  double Mt = 0.0, kr = 0.0;
-  if (p->twisting) {
-    double f = 8.0 / M_PI, E = M_PI / 2.0;   /* circle */
-    if (ell) {
-      f = twist_factor(tnu, b / a, &el);
-      E = el.E;
-    }
-    const double ktw = pq(2.0 * M_PI / 3.0 * f, a, a, a, m->s0, 1.0);
-    const double Ms = pq(0.375 * E, mu, Fb, a, 1.0, 1.0);
-    const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * f), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
-    double st, It;
-    ntw = profile_step1(fresh ? 0 : nt, h->seg_t, r, &dphi, Lt, pt, &st, &It);
-    Mt = ktw * It;
-    if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
-    kr = ktw * st;
+/* Twisting (Eq. 77, generalised to two bodies; full slip 3/8 mu F a E):
+   the twist profile stepped by dphi; returns its piece count (pt), the
+   moment and its tangent stiffness. */
+DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
+                        const dc_cmd_state *h, int ntu, double r, double dphi, piece *pt, double *Mt_out, double *kr_out)
+{
+  const double a = patch->a, b = patch->b, mu = p->mu, Fb = patch->F_bound;
+  double tf = 8.0 / M_PI, E = M_PI / 2.0;   /* circle */
+  if (f->ell) {
+    tf = twist_factor(f->tnu, b / a, &f->el);
+    E = f->el.E;
   }
+  const double ktw = pq(2.0 * M_PI / 3.0 * tf, a, a, a, m->s0, 1.0);
+  const double Ms = pq(0.375 * E, mu, Fb, a, 1.0, 1.0);
+  const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * tf), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
+  double st, It;
+  const int ntw = profile_step1(ntu, h->seg_t, r, &dphi, Lt, pt, &st, &It);
+  double Mt = ktw * It;
+  if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
+  *Mt_out = Mt;
+  *kr_out = ktw * st;
+  return ntw;
+}
 
-  /* ---- results finite, then commit */
-  double fin = ((nf(F[0]) + nf(F[1])) + (nf(F[2]) + nf(kt))) + ((nf(stick) + nf(Mt)) + nf(kr));
+/* Whether every result is finite (the values to be stored among them). */
+DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, double Mt, double kr, const piece *pf,
+                                 int nfp, const piece *pt, int ntw)
+{
+  double fin = ((dc_nf(F[0]) + dc_nf(F[1])) + (dc_nf(F[2]) + dc_nf(kt))) + ((dc_nf(stick) + dc_nf(Mt)) + dc_nf(kr));
   {
     double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0;
     for (int j = 0; j < nfp; j++) {
-      f0 += nf(pf[j].x1) + nf(pf[j].v0[0]);
-      f1 += nf(pf[j].v0[1]) + nf(pf[j].v0[2]);
-      f2 += nf(pf[j].v1[0]) + nf(pf[j].v1[1]);
-      f3 += nf(pf[j].v1[2]);
+      f0 += dc_nf(pf[j].x1) + dc_nf(pf[j].v0[0]);
+      f1 += dc_nf(pf[j].v0[1]) + dc_nf(pf[j].v0[2]);
+      f2 += dc_nf(pf[j].v1[0]) + dc_nf(pf[j].v1[1]);
+      f3 += dc_nf(pf[j].v1[2]);
     }
     fin += (f0 + f1) + (f2 + f3);
   }
-  for (int j = 0; j < ntw; j++) fin += nf(pt[j].x1) + (nf(pt[j].v0[0]) + nf(pt[j].v1[0]));
-  if (fin != 0.0) return DC_ERANGE;
+  for (int j = 0; j < ntw; j++) fin += dc_nf(pt[j].x1) + (dc_nf(pt[j].v0[0]) + dc_nf(pt[j].v1[0]));
+  return fin == 0.0;
+}
 
-  for (int k = 0; k < 3; k++) {
-    out->Ft[k] = F[k];
-    h->n_prev[k] = nh[k];
-  }
-  out->kt = kt;
-  out->stick = stick;
-  out->Mt = Mt;
-  out->kr = kr;
+/* The new history: normal, patch size, the profiles; pieces no longer
+   used are 0 (one history per state). */
+DC_INLINE void cmd_commit(const dc_cmd_params *p, const double *nh, double a, const piece *pf, int nfp, int ns,
+                          const piece *pt, int ntw, int nt, dc_cmd_state *h)
+{
+  for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
   h->a_prev = a;
   h->nseg = nfp;
   for (int j = 0; j < nfp; j++) {
@@ -809,7 +832,6 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
       q->u1[k] = pf[j].v1[k];
     }
   }
-  /* pieces no longer used are 0 (one history per state); the rest are 0 already */
   if (nfp < ns) memset(&h->seg[nfp], 0, sizeof(dc_cmd_piece) * (ns - nfp));
   if (p->twisting) {
     h->nseg_t = ntw;
@@ -820,5 +842,44 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
     }
     if (ntw < nt) memset(&h->seg_t[ntw], 0, sizeof(dc_cmd_twist_piece) * (nt - ntw));
   }
+}
+
+int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
+                const double n[3], const double du[3], double dphi, double dt,
+                dc_cmd_state *h, dc_cmd_out *out)
+{
+  int ns, nt;
+  if (cmd_check(p, m, patch, n, du, dphi, dt, h, &ns, &nt) != DC_OK) return DC_EDOM;
+  const double a = patch->a, b = patch->b;
+  const double axl = dot3(patch->axis, patch->axis);
+  if (a > b && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
+
+  /* not formed, or no area: the history starts afresh */
+  if (patch->formed == 0.0 || a == 0.0) {
+    memset(h, 0, p->twisting ? sizeof *h : DC_CMD_FORCE_NFIELDS * sizeof(double));
+    memset(out, 0, sizeof *out);
+    return DC_OK;
+  }
+
+  cmd_frame f;
+  if (cmd_frame_of(m, patch, n, du, axl, &f) != DC_OK) return DC_EDOM;
+  const int fresh = !(h->a_prev > 0.0);
+  const double r = fresh ? 1.0 : h->a_prev / a;   /* the pieces' radii scale by a_prev / a */
+  const int nsu = fresh ? 0 : ns;
+  dc_cmd_piece S[DC_CMD_MAX_SEG];
+  const dc_cmd_piece *seg = cmd_turned_profile(h, f.nh, nsu, S);
+
+  piece pf[MAXP], pt[MAXP];
+  double F[3], kt, stick, Mt = 0.0, kr = 0.0;
+  const int nfp = cmd_force(p, m, patch, &f, seg, nsu, r, dt, pf, F, &kt, &stick);
+  const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr) : 0;
+  if (!cmd_results_finite(F, kt, stick, Mt, kr, pf, nfp, pt, ntw)) return DC_ERANGE;
+
+  for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
+  out->kt = kt;
+  out->stick = stick;
+  out->Mt = Mt;
+  out->kr = kr;
+  cmd_commit(p, f.nh, a, pf, nfp, ns, pt, ntw, nt, h);
   return DC_OK;
 }

@@ -163,8 +163,9 @@ __attribute__((always_inline)) inline void applyNormalForce(const SurfacesInters
 
 /* Adds the tangential force F to i (-F to j) at the contact point, with its
    torques (spheres: lever arms cri, crj along -en and +en; non-spherical
-   particles: from the contact point); walls scale by area_ratio. */
-inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
+   particles: from the contact point); walls scale by area_ratio. Inline:
+   it runs once per contact and sub-model that acts. */
+__attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
                                  double **x, ForceData &i_forces, ForceData &j_forces)
 {
   const double *n = sidata.en;

@@ -407,9 +407,22 @@ protected:
   void publish(SurfacesCloseData &d, const dc_contact &c, const double *axis)
   {
     if (!patch.active()) return;
-    dc_patch p;
-    dc_patch_from_contact(&c, c.a > c.b ? axis : NULL, &p);
-    patch.write(d, p);
+    dc_patch_from_contact(&c, c.a > c.b ? axis : NULL, &patch.next());
+    patch.commit(d);
+  }
+  /* Publishes the patch of a sphere contact: the circle of Hertz contact
+     of radius R at overlap delta with elastic force F (= kn delta). */
+  void publishCircle(SurfacesCloseData &d, double R, double delta, double F, double Estar)
+  {
+    if (!patch.active()) return;
+    if (!dc_hertz_patch_circle(R, delta, F, &patch.next())) {   /* beyond the doubles: the checked law */
+      dc_hertz_geom g;
+      dc_contact c;
+      dc_hertz_geometry_circle(R, &g);
+      dc_hertz_normal(&g, Estar, delta, &c);
+      dc_patch_from_contact(&c, NULL, &patch.next());
+    }
+    patch.commit(d);
   }
   void publishNone(SurfacesCloseData &d)
   {

@@ -57,12 +57,11 @@ public:
     const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], r_area == r_force ? root : sqrt(r_area * deltan));
     const double P = kn * deltan;
     applyForce(sidata, P, deltan, sidata.vn, Sn, kn, kt, i_forces, j_forces);
-    if (ax) {
-      if (!sq) hertzGeometry(r_force, r_force, g);
-      dc_contact c;
-      dc_hertz_normal(&g, Yeff[itype][jtype], deltan, &c);
-      publish(sidata, c, ax);
-    }
+    if (!ax) return;
+    if (!sq) return publishCircle(sidata, r_force, deltan, P, Yeff[itype][jtype]);
+    dc_contact c;
+    dc_hertz_normal(&g, Yeff[itype][jtype], deltan, &c);
+    publish(sidata, c, ax);
   }
 
   void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)

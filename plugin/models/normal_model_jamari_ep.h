@@ -92,15 +92,10 @@ public:
       checkHertzRange(sidata, R_major * sidata.deltan, R_major);
       double kn, Sn;
       const double root = dc_hertz_stiffness(Y, R_major, sidata.deltan, &kn, &Sn);
-      applyForce(sidata, kn * sidata.deltan, sidata.deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root),
+      const double P = kn * sidata.deltan;
+      applyForce(sidata, P, sidata.deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root),
                  i_forces, j_forces);
-      if (ax) {
-        dc_hertz_geom g;
-        dc_hertz_geometry_circle(R_major, &g);
-        dc_contact c;
-        dc_hertz_normal(&g, Y, sidata.deltan, &c);
-        publish(sidata, c, ax);
-      }
+      if (ax) publishCircle(sidata, R_major, sidata.deltan, P, Y);
       return;
     }
     if (!sq) dc_hertz_geometry_circle(R_major, &g);

@@ -107,7 +107,7 @@ public:
         return;
       }
     }
-    jkrForce(sidata, sidata.deltan, sidata.vn, forming, i_forces, j_forces);
+    if (!jkrForce(sidata, sidata.deltan, sidata.vn, forming, i_forces, j_forces)) publishNone(sidata);
   }
 
   /* A formed contact with negative overlap: tensile JKR force until delta_break. */

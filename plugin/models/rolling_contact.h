@@ -17,11 +17,11 @@
    model, so the decision is made in the tangential model's call: the
    rolling model announces itself in its constructor (history-offset name
    "dc_rolling_model"); a tangential model holding a RollingHandover then
-   stores, per contact and step, the kinematics and the decision in
-   history values found by the name "dc_rolling_kin" (V, ex, slip, spin,
-   acts), which the rolling model reads in the same step. A tangential
-   model without a RollingHandover (stock history, no_history, off) gives
-   the rolling model no "dc_rolling_kin": it stops the run at set-up.
+   keeps, per contact and step, the kinematics and the decision in memory
+   (contact_slot.h, name "dc_rolling_kin"), which the rolling model reads
+   in the same evaluation. A tangential model without a RollingHandover
+   (stock history, no_history, off) offers the rolling model no
+   "dc_rolling_kin": it stops the run at set-up.
 
    Kinematics. Body i is the particle, j the other particle or the wall;
    n = en (from j to i). Spheres: curvature 1/r of each sphere (a wall:
@@ -42,6 +42,7 @@
 #include "atom.h"
 #include "contact_interface.h"
 #include "contact_models.h"
+#include "contact_slot.h"
 #include "error.h"
 #include "settings.h"
 #include "superquadric_curvature.h"
@@ -55,13 +56,12 @@ namespace ContactModels {
    one deck value reaches both). */
 static const double DC_ROLLING_VMIN_DEFAULT = 1e-3;   /* rollingVelocityMin [m/s] */
 
-/* The hand-over record in the contact history: V, ex (3), slip (3), spin,
-   acts. Recomputed every step before it is read. */
-enum { DC_ROLLING_KIN_NFIELDS = 9 };
-static const char *const dc_rolling_kin_names[DC_ROLLING_KIN_NFIELDS] = {
-  "dc_rolling_V", "dc_rolling_ex_x", "dc_rolling_ex_y", "dc_rolling_ex_z", "dc_rolling_slip_x",
-  "dc_rolling_slip_y", "dc_rolling_slip_z", "dc_rolling_spin", "dc_rolling_acts"};
-static const char *const dc_rolling_kin_flips[DC_ROLLING_KIN_NFIELDS] = {"0", "0", "0", "0", "1", "1", "1", "0", "0"};
+/* The hand-over record: this evaluation's kinematics and whether the
+   rolling model acts. */
+struct RollingRecord {
+  dc_rolling_kin k;
+  bool acts;
+};
 
 /* The rolling kinematics of one contact (dc_rolling_kinematics_capped). */
 class RollingKinematics {
@@ -157,7 +157,14 @@ private:
 /* The tangential models' side of the hand-over. */
 class RollingHandover {
 public:
-  RollingHandover() : cmb_(0), offset_(-1), v_min_(DC_ROLLING_VMIN_DEFAULT), max_radius_factor_(100.0) {}
+  RollingHandover() : cmb_(0), offered_(false), v_min_(DC_ROLLING_VMIN_DEFAULT), max_radius_factor_(100.0)
+  {
+    memset(&record_, 0, sizeof record_);
+  }
+  ~RollingHandover()
+  {
+    if (offered_) ContactSlots::withdraw(cmb_, "dc_rolling_kin");
+  }
 
   /* From the tangential model's constructor. */
   void attach(ContactModelBase *cmb) { cmb_ = cmb; }
@@ -171,49 +178,38 @@ public:
     settings.registerDoubleSetting("maxRadiusFactor", max_radius_factor_, 100.0);
   }
 
-  /* From its postSettings: the history values of the hand-over record. */
-  void setup(LAMMPS_NS::LAMMPS *lmp, IContactHistorySetup *hsetup)
+  /* From its postSettings: the record offered to the rolling model. */
+  void setup(LAMMPS_NS::LAMMPS *lmp)
   {
     if (!announced()) return;
-    for (int k = 0; k < DC_ROLLING_KIN_NFIELDS; k++) {
-      const int off = hsetup->add_history_value(dc_rolling_kin_names[k], dc_rolling_kin_flips[k]);
-      if (k == 0) offset_ = off;
-    }
-    cmb_->add_history_offset("dc_rolling_kin", offset_);
+    ContactSlots::offer(cmb_, "dc_rolling_kin", &record_);
+    offered_ = true;
     kinematics_.setup(lmp, cmb_);
   }
 
   /* Whether a rolling model shares this contact. */
-  bool active() const { return offset_ >= 0; }
+  bool active() const { return offered_; }
 
-  /* From its surfacesIntersect: the kinematics of this contact stored for
+  /* From its surfacesIntersect: the kinematics of this contact kept for
      the rolling model; true when the rolling model acts (the tangential
      model then applies nothing and releases its history). */
   bool rolls(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const dc_patch &p)
   {
-    dc_rolling_kin k;
-    kinematics_.compute(lmp, d, max_radius_factor_, k);
+    kinematics_.compute(lmp, d, max_radius_factor_, record_.k);
     dc_rolling_params prm;
     prm.mu = 0.0;
     prm.v_min = v_min_;
     prm.model = DC_ROLLING_VJ;
-    const int acts = dc_rolling_acts(&prm, &p, &k);
-    double *h = &d.contact_history[offset_];
-    h[0] = k.V;
-    for (int c = 0; c < 3; c++) {
-      h[1 + c] = k.ex[c];
-      h[4 + c] = k.slip[c];
-    }
-    h[7] = k.spin;
-    h[8] = acts ? 1.0 : 0.0;
-    return acts != 0;
+    record_.acts = dc_rolling_acts(&prm, &p, &record_.k) != 0;
+    return record_.acts;
   }
 
 private:
   bool announced() const { return cmb_ && cmb_->get_history_offset("dc_rolling_model") >= 0; }
 
   ContactModelBase *cmb_;
-  int offset_;
+  bool offered_;
+  RollingRecord record_;
   double v_min_, max_radius_factor_;
   RollingKinematics kinematics_;
 };

@@ -66,7 +66,7 @@ class RollingModel<ROLLING_KALKER> : public RollingModelBase
 public:
   RollingModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     RollingModelBase(lmp, hsetup, c), creepModel(DC_ROLLING_VJ), vMin(DC_ROLLING_VMIN_DEFAULT),
-    maxRadiusFactor(100.0), kin_offset(-1), ntypes(0)
+    maxRadiusFactor(100.0), handed(0), ntypes(0)
   {
     patch.request(c);
     c->add_history_offset("dc_rolling_model", 0, true);   /* announces the hand-over (rolling_contact.h) */
@@ -84,11 +84,11 @@ public:
   void postSettings(IContactHistorySetup *, ContactModelBase *c)
   {
     patch.setup(lmp, c);
-    if (c->get_history_offset("dc_patch") < 0)
+    if (!patch.published())
       error->all(FLERR, "Rolling model kalker needs a normal model that publishes the contact patch: "
                         "model hertz_elliptic, gw_rough, jkr_elliptic, jamari_ep or classical");
-    kin_offset = c->get_history_offset("dc_rolling_kin");
-    if (kin_offset < 0)
+    handed = ContactSlots::find<const RollingRecord>(c, "dc_rolling_kin");
+    if (!handed)
       error->all(FLERR, "Rolling model kalker needs a tangential model that hands the tangential force over "
                         "while the contact rolls: tangential cmd_tangential or tangential classical");
     if (!(vMin > 0.0 && std::isfinite(vMin))) {
@@ -140,21 +140,14 @@ public:
       }
   }
 
-  /* The tangential model has stored this step's kinematics and the
+  /* The tangential model has kept this evaluation's kinematics and the
      decision (rolling_contact.h); while the contact rolls, the creep force
      at the contact point and the spin moment about en. */
   void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
-    const double *h = &sidata.contact_history[kin_offset];
-    if (h[8] == 0.0) return;
+    if (!handed->acts) return;
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_ROLLING_MODEL;
-    dc_rolling_kin k;
-    k.V = h[0];
-    for (int c = 0; c < 3; c++) {
-      k.ex[c] = h[1 + c];
-      k.slip[c] = h[4 + c];
-    }
-    k.spin = h[7];
+    const dc_rolling_kin &k = handed->k;
     dc_patch p;
     patch.read(sidata, p);
     const int t = sidata.itype * (ntypes + 1) + sidata.jtype;
@@ -186,7 +179,8 @@ public:
 private:
   int creepModel;
   double vMin, maxRadiusFactor;
-  int kin_offset, ntypes;
+  const RollingRecord *handed;   /* the tangential model's hand-over record (rolling_contact.h) */
+  int ntypes;
   std::vector<dc_rolling_params> params;
   std::vector<dc_rolling_material> materials;
   ContactPatchReader patch;

@@ -45,6 +45,7 @@ TANGENTIAL_MODEL(TANGENTIAL_CLASSICAL,classical,@DC_MODEL_ID@)
 #include "tangential_model_base.h"
 #include "update.h"
 #include "dc/classical_tangential.h"
+#include "dc/classical_tangential_step.h"
 #include "dc/contract.h"
 #include "dc/status.h"
 
@@ -85,7 +86,7 @@ public:
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
-    handover.setup(lmp, hsetup);
+    handover.setup(lmp);
     for (int k = 0; k < nfields(); k++) {
       const int off = hsetup->add_history_value(dc_classical_tangential_history[k].name,
                                                 dc_classical_tangential_history[k].flips ? "1" : "0");
@@ -137,7 +138,26 @@ public:
       }
   }
 
+  /* One dispatch on the law setting per contact (the same branch for the
+     whole run); each law's step is compiled with its law a constant. */
   inline void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  {
+    switch (law) {
+    case DC_CT_COULOMB: return intersect<DC_CT_COULOMB>(sidata, i_forces, j_forces);
+    case DC_CT_VISCOUS: return intersect<DC_CT_VISCOUS>(sidata, i_forces, j_forces);
+    case DC_CT_VISCOUS_SLIDING: return intersect<DC_CT_VISCOUS_SLIDING>(sidata, i_forces, j_forces);
+    case DC_CT_SPRING_SLIDING: return intersect<DC_CT_SPRING_SLIDING>(sidata, i_forces, j_forces);
+    case DC_CT_SPRING_DASHPOT_SLIDING: return intersect<DC_CT_SPRING_DASHPOT_SLIDING>(sidata, i_forces, j_forces);
+    case DC_CT_DI_RENZO: return intersect<DC_CT_DI_RENZO>(sidata, i_forces, j_forces);
+    case DC_CT_LANGSTON: return intersect<DC_CT_LANGSTON>(sidata, i_forces, j_forces);
+    case DC_CT_ZHENG: return intersect<DC_CT_ZHENG>(sidata, i_forces, j_forces);
+    case DC_CT_TSUJI: return intersect<DC_CT_TSUJI>(sidata, i_forces, j_forces);
+    default: return intersect<DC_CT_INCREMENTAL>(sidata, i_forces, j_forces);
+    }
+  }
+
+  template<int LAW>
+  void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     dc_patch p;
@@ -158,15 +178,9 @@ public:
       h = &scratch;
     }
     dc_classical_tangential_out out;
-    const int st = dc_classical_tangential_step(&models[sidata.itype * (ntypes + 1) + sidata.jtype], &p, &c, sidata.en,
-                                                NULL, vt, update->dt, h, &out);
-    if (st != DC_OK) {
-      char msg[320];
-      snprintf(msg, sizeof msg, "Tangential model classical: contact of atom %d: patch a = %g, friction load %g, "
-               "velocity %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.F_bound, vt[0], vt[1], vt[2],
-               dc_status_str(st));
-      error->one(FLERR, msg);
-    }
+    const int st = dc_classical_tangential_step_law(LAW, &models[sidata.itype * (ntypes + 1) + sidata.jtype], &p, &c,
+                                                    sidata.en, NULL, vt, update->dt, h, &out);
+    if (st != DC_OK) fail(sidata, p, vt, st);
     const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
     applyTangentialForce(sidata, F, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);
   }
@@ -182,6 +196,15 @@ public:
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+  /* A c_core error: stops the run naming the contact. */
+  __attribute__((noinline)) void fail(const SurfacesIntersectData &sidata, const dc_patch &p, const double *vt, int st)
+  {
+    char msg[320];
+    snprintf(msg, sizeof msg, "Tangential model classical: contact of atom %d: patch a = %g, friction load %g, "
+             "velocity %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.F_bound, vt[0], vt[1], vt[2], dc_status_str(st));
+    error->one(FLERR, msg);
+  }
+
   /* history values stored: the laws other than incremental read only the spring */
   int nfields() const { return law == DC_CT_INCREMENTAL ? DC_CT_HISTORY_NFIELDS : DC_CT_SPRING_NFIELDS; }
   bool springy() const

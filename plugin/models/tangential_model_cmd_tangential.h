@@ -75,7 +75,7 @@ public:
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
-    handover.setup(lmp, hsetup);
+    handover.setup(lmp);
     const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
     const int need = neighbor->oneatom * (nfields + 40);
     if (neighbor->pgsize < need) neighbor->pgsize = need;
@@ -143,7 +143,7 @@ public:
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
     dc_cmd_state *h = state(scdata);
-    if (!patch.formed(scdata)) {
+    if (!patch.formed()) {
       if (h->a_prev != 0.0) memset(h, 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
       return;
     }

@@ -26,6 +26,13 @@
 # DC_BENCH_PREP=DIR keeps the restart files in DIR and reuses them in a
 # later invocation.
 # DC_BENCH_MPIRUN="--bind-to none" (for example) passes options to mpirun.
+# DC_BENCH_INSTRUCTIONS=1: after the timed runs, each 1-rank configuration
+# that ran also runs once under valgrind's callgrind (collected inside
+# Verlet::run only; about 20-40x slower than the timed run): instruction
+# counts that do not depend on the machine's load, printed beside the
+# times in the whole-contact table.
+# DC_BENCH_ONLY="contact" runs the configurations of the whole-contact
+# table alone (the sub-models' cost around their laws).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 lmp="$root/build/bin/liggghts"
@@ -103,10 +110,25 @@ configs=(
   "sqe2|$sqs|hertz_elliptic|10000|2|-var rfile $prep/sq_hertz_elliptic.restart"
   # the same with the curvature reused across steps (curvatureTolerance 1e-4)
   "sqr|$sqs|hertz_elliptic|10000|1|-var rfile $prep/sq_hertz_elliptic_t4.restart -var ctol 1e-4"
+  # whole-contact cost: each sub-model on the jittered sphere packing
+  # against stock hertz + tangential history (sth): hertz_elliptic with
+  # stock history, with the contact patch stored, with each classical
+  # tangential law (springSliding: stock history's physics) and with
+  # cmd_tangential; the classical laws' rows are added below
+  "seh|$sph|hertz_elliptic|10000|1|-var jitter 2e-4"
+  "sep|$sph|hertz_elliptic|10000|1|-var jitter 2e-4 -var tkey contactPatch -var tval on"
+  "stc|$sph|hertz_elliptic|10000|1|-var tmodel cmd_tangential -var jitter 2e-4"
   # control: configuration se again, last in the round-robin; its time
   # against se is what a best-of-REPS ratio carries as noise on this machine
   "se_again|$sph|hertz_elliptic|10000|1|"
 )
+classical_laws="springSliding coulomb viscous viscousSliding springDashpotSliding diRenzo langston zheng tsuji incremental"
+for law in $classical_laws; do
+  configs+=("sc_$law|$sph|hertz_elliptic|10000|1|-var tmodel classical -var jitter 2e-4 -var tkey classicalTangential -var tval $law")
+done
+contact_rows="sth seh sep st stc qe qt sre sra spe spa rt rk0 se sjp"
+for law in $classical_laws; do contact_rows="$contact_rows sc_$law"; done
+[ "${DC_BENCH_ONLY:-}" = contact ] && DC_BENCH_ONLY="$contact_rows se_again"
 # untimed preparation of the settled scenes: once per restart file named by
 # a configuration that runs
 for c in "${configs[@]}"; do
@@ -142,8 +164,24 @@ for r in $(seq "$reps"); do
     done
   done
 done
+# instruction counts: one callgrind run per 1-rank configuration that ran
+declare -A ins
+if [ -n "${DC_BENCH_INSTRUCTIONS:-}" ]; then
+  for c in "${configs[@]}"; do
+    IFS='|' read -r name deck model steps ranks extra <<< "$c"
+    if [ -n "${DC_BENCH_ONLY:-}" ] && [[ " $DC_BENCH_ONLY " != *" $name "* ]]; then continue; fi
+    [ "$ranks" -eq 1 ] && [ "$name" != se_again ] || continue
+    d="$work/cg_$name"; mkdir -p "$d"; cd "$d"
+    echo "counting instructions: $name" >&2
+    valgrind --tool=callgrind --toggle-collect='LAMMPS_NS::Verlet::run(int)' --callgrind-out-file=cg.out \
+      "$lmp" -in "$deck" -var model "$model" -var steps "$steps" $extra -log log > screen.txt 2>&1 \
+      || { echo "bench: callgrind run of $name failed, see below" >&2; tail -20 screen.txt >&2; exit 1; }
+    ins[$name]=$(awk '/^(summary|totals):/ {print $2; exit}' cg.out)
+  done
+fi
 args=()
 for k in "${!best[@]}"; do args+=("$k=${best[$k]}"); done
+for k in "${!ins[@]}"; do args+=("ins_$k=${ins[$k]}"); done
 python3 - "${args[@]}" <<'PY'
 import sys
 t = dict(a.split("=") for a in sys.argv[1:])
@@ -188,6 +226,33 @@ for tag, what, n in (("ss", "3264 spheres, settled bed", 20000), ("sq", "1056 su
         tag + "h", tag + "h2", tag + "e", tag + "e2")
 row(lambda h, e, r: "    superquadrics, hertz_elliptic with curvatureTolerance 1e-4, 1 rank %9.3f s = %.4f x stock hertz "
     "(%.4f x without)" % (r, r / h, e / h), "sqh", "sqe", "sqr")
+# the whole-contact table: each sub-model's run against its reference run
+contact = [("hertz_elliptic + tangential history", "seh", "sth", None),
+           ("hertz_elliptic + classical springSliding (stock history's physics)", "sc_springSliding", "sth", 1.03)]
+contact += [("hertz_elliptic + classical %s" % k[3:], k, "sth", 1.06) for k in sorted(t) if k.startswith("sc_")
+            and k != "sc_springSliding" and not k.startswith("base_")]
+contact += [("stock hertz + cmd_tangential", "st", "sth", None),
+            ("hertz_elliptic + cmd_tangential", "stc", "sth", 1.25),
+            ("superquadrics: cmd_tangential over hertz_elliptic + history", "qt", "qe", 1.08),
+            ("contactPatch on over off (hertz_elliptic + history)", "sep", "seh", 1.02),
+            ("cohesion gw_adhesion over gw_rough gwElliptic on", "sra", "sre", 1.12),
+            ("    polydisperse", "spa", "spe", 1.12),
+            ("rolling_friction kalker, nothing rolling, over none", "rk0", "rt", 1.03),
+            ("jamari_ep (plastic) over hertz_elliptic (unjittered)", "sjp", "se", 1.10)]
+if any(k in t for _, k, _, _ in contact):
+    print()
+    print("whole-contact cost (2888 spheres jittered 2e-4, 10000 steps, 1 rank, unless named; best of runs)")
+    print("%-66s %9s %9s %8s %8s %7s" % ("configuration / against", "time", "against", "ratio", "instr.", "target"))
+    for what, k, ref, target in contact:
+        if k not in t or ref not in t:
+            continue
+        r = float(t[k]) / float(t[ref])
+        ri = "%.4f" % (float(t["ins_" + k]) / float(t["ins_" + ref])) if "ins_" + k in t and "ins_" + ref in t else "n/a"
+        print("%-66s %8.3fs %8.3fs %8.4f %8s %7s" % (what + " / " + ref, float(t[k]), float(t[ref]), r, ri,
+                                                     "<= %.2f" % target if target else ""))
+    if "ins_sth" in t:
+        print("instructions (callgrind, inside Verlet::run): " +
+              ", ".join("%s %.4g" % (k[4:], float(v)) for k, v in sorted(t.items()) if k.startswith("ins_")))
 row(lambda se, sa: "control: the same configuration (spheres, hertz_elliptic) run twice, second and last in the "
     "round-robin: %.3f s and %.3f s, ratio %.4f (the noise in this run's ratios)" % (se, sa, sa / se), "se", "se_again")
 PY

@@ -2,7 +2,8 @@
    mpmath tables (tests/reference/hertz_elliptic.csv, and every output of
    dc_hertz_geometry over the whole ratio range in
    hertz_geometry_dense.csv), against a second method on a denser sweep,
-   the circular limit, and the approximate eccentricity of review Eq. 14. */
+   the circular limit, the approximate eccentricity of review Eq. 14, and
+   the inline sphere patch (dc_hertz_patch_circle) against dc_hertz_normal. */
 #include "check.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/hertz_elliptic.h"
@@ -107,8 +108,44 @@ static void test_second_method(void)
   for (int k = 1; k < 9; k++) CHECK(worst[k] <= 4e-15);
 }
 
+/* The inline patch of a sphere contact against dc_hertz_normal on the
+   circle's geometry (both dc_hertz_geometry(R, R) and
+   dc_hertz_geometry_circle): the same bits over radii, overlaps and moduli
+   of 30 decades each, and the fallback at the edges of the doubles. */
+static void test_patch_circle(void)
+{
+  unsigned long long x = 2463534242ull;
+  long same = 0, differ = 0;
+  for (int k = 0; k < 300000; k++) {
+    const double R = pow(10.0, -15.0 + 30.0 * check_uniform(&x));
+    const double delta = R * pow(10.0, -15.0 * check_uniform(&x));
+    const double E = pow(10.0, 3.0 + 9.0 * check_uniform(&x));
+    dc_hertz_geom g1, g2;
+    dc_contact c1, c2;
+    dc_patch p1, p2, q;
+    double kn, S;
+    dc_hertz_stiffness(E, R, delta, &kn, &S);
+    if (!CHECK(dc_hertz_geometry(R, R, &g1) == DC_OK)) continue;
+    dc_hertz_geometry_circle(R, &g2);
+    if (!CHECK(dc_hertz_normal(&g1, E, delta, &c1) == DC_OK && dc_hertz_normal(&g2, E, delta, &c2) == DC_OK)) continue;
+    dc_patch_from_contact(&c1, NULL, &p1);
+    dc_patch_from_contact(&c2, NULL, &p2);
+    if (!CHECK(dc_hertz_patch_circle(R, delta, kn * delta, &q) == 1)) continue;
+    if (memcmp(&p1, &q, sizeof q) == 0 && memcmp(&p2, &q, sizeof q) == 0) same++;
+    else if (differ++ < 5) printf("patch circle: R %.17g delta %.17g: a %.17g against %.17g\n", R, delta, q.a, p1.a);
+  }
+  CHECK(differ == 0 && same == 300000);
+  /* no overlap: the patch of no contact */
+  dc_patch q;
+  CHECK(dc_hertz_patch_circle(1e-3, 0.0, 0.0, &q) == 1 && q.a == 0.0 && q.F_bound == 0.0 && q.formed == 0.0);
+  /* a product beyond the doubles: 0, the caller takes the checked law */
+  CHECK(dc_hertz_patch_circle(1e300, 1e300, 1.0, &q) == 0);
+  CHECK(dc_hertz_patch_circle(1e-3, 1e-3, HUGE_VAL, &q) == 0);
+}
+
 int main(void)
 {
+  test_patch_circle();
   test_dense_table();
   test_second_method();
   FILE *f = check_open_reference("hertz_elliptic.csv");

@@ -123,6 +123,23 @@ static inline double dc_hertz_stiffness(double Estar, double R_force, double del
    otherwise; DC_EDOM leaves c untouched. */
 int dc_hertz_normal(const dc_hertz_geom *g, double Estar, double delta, dc_contact *c);
 
+/* The contact patch (dc/contract.h) of a circular Hertz contact of radius
+   R at overlap delta >= 0 with elastic force F (dc_hertz_stiffness's
+   kn delta): inline, the same bits as dc_hertz_normal on
+   dc_hertz_geometry_circle(R) (Eq. 1 with a^2 = 2 R delta D / K, D/K = 1/2),
+   which a sphere contact publishes every step. Returns 0 where a product
+   leaves the doubles (call dc_hertz_normal then), 1 otherwise. */
+static inline int dc_hertz_patch_circle(double R, double delta, double F, dc_patch *p)
+{
+  const double a = delta > 0.0 ? sqrt(2.0 * R * delta * (0.25 * M_PI) / (0.5 * M_PI)) : 0.0;
+  if (!(a <= DBL_MAX && F <= DBL_MAX) || (a == 0.0 && delta > 0.0)) return 0;
+  p->a = p->b = a;
+  p->axis[0] = p->axis[1] = p->axis[2] = 0.0;
+  p->F_elastic = p->F_bound = delta > 0.0 ? F : 0.0;
+  p->formed = delta > 0.0 ? 1.0 : 0.0;
+  return 1;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -1,0 +1,354 @@
+/* The step of the classical tangential laws (dc/classical_tangential.h),
+   inline: dc_classical_tangential_step_law is dc_classical_tangential_step
+   with the law an argument, so that a caller that knows the law (a
+   LIGGGHTS wrapper dispatching once on its setting) gets the law's path
+   alone, its values in registers. The same code and the same bits as the
+   function (which calls it). */
+#ifndef DC_CLASSICAL_TANGENTIAL_STEP_H
+#define DC_CLASSICAL_TANGENTIAL_STEP_H
+
+#include <float.h>
+#include <math.h>
+#include <string.h>
+#include "dc/classical_tangential.h"
+#include "dc/inline.h"
+#include "dc/status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* |v| without overflow or underflow: the scaled form where v.v leaves the
+   normal range. */
+static inline double ct_norm3_scaled(const double *v)
+{
+  double mx = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+  if (mx == 0.0 || !isfinite(mx)) return mx;
+  const double a = v[0] / mx, b = v[1] / mx, c = v[2] / mx;
+  return mx * sqrt(a * a + b * b + c * c);
+}
+
+DC_INLINE double ct_dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+DC_INLINE double ct_norm3(const double *v)
+{
+  const double s = ct_dot3(v, v);
+  return s >= DBL_MIN && s <= DBL_MAX ? sqrt(s) : ct_norm3_scaled(v);
+}
+
+DC_INLINE int ct_finite3(const double *v) { return dc_nf(v[0]) + dc_nf(v[1]) + dc_nf(v[2]) == 0.0; }
+
+/* v minus its part along the unit n, scaled back to its former length
+   (LIGGGHTS' rotation of the shear history). */
+DC_INLINE void ct_turn_into_plane(double *v, const double *n)
+{
+  const double vn = ct_dot3(v, n);
+  if (vn == 0.0) return;   /* in the plane already (or zero) */
+  double w[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
+  const double len2 = ct_dot3(v, v), lw2 = ct_dot3(w, w);
+  const double q = len2 / lw2;
+  if (len2 >= DBL_MIN && len2 <= DBL_MAX && lw2 >= DBL_MIN && lw2 <= DBL_MAX && q <= DBL_MAX) {   /* one root */
+    const double f = sqrt(q);
+    for (int k = 0; k < 3; k++) v[k] = w[k] * f;
+    return;
+  }
+  const double len = ct_norm3(v), lw = ct_norm3(w);
+  if (!(lw > 0.0)) { v[0] = v[1] = v[2] = 0.0; return; }
+  const double f = len / lw;
+  for (int k = 0; k < 3; k++) v[k] = w[k] * f;
+  if (!ct_finite3(v)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
+}
+
+/* The history back: the laws other than INCREMENTAL own only the spring. */
+DC_INLINE void ct_store(int law, const dc_classical_tangential_state *s, dc_classical_tangential_state *h)
+{
+  memcpy(h->spring, s->spring, sizeof h->spring);
+  if (law == DC_CT_INCREMENTAL) memcpy(h->rev, s->rev, sizeof h->rev);
+}
+
+DC_INLINE void ct_project_plane(double *v, const double *n)
+{
+  const double vn = ct_dot3(v, n);
+  for (int k = 0; k < 3; k++) v[k] -= vn * n[k];
+}
+
+/* Scales F onto |F| = lim when it exceeds it; 1 if it did. */
+DC_INLINE int ct_limit_force(double *F, double lim)
+{
+  const double f2 = ct_dot3(F, F), lim2 = lim * lim;
+  if (f2 <= lim2 && lim2 <= DBL_MAX && (f2 >= DBL_MIN || f2 == 0.0) && lim2 >= DBL_MIN) return 0;   /* no root */
+  const double f = ct_norm3(F);
+  if (!(f > lim)) return 0;
+  if (lim == 0.0) { F[0] = F[1] = F[2] = 0.0; return 1; }
+  for (int k = 0; k < 3; k++) F[k] = F[k] / f * lim;
+  return 1;
+}
+
+/* K_t of the stiffness setting. */
+DC_INLINE double ct_spring_stiffness(const dc_classical_tangential *m, const dc_patch *patch,
+                               const dc_classical_tangential_contact *c)
+{
+  switch (m->p.stiffness) {
+  case DC_CT_KT_GIVEN: return m->p.kt;
+  case DC_CT_KT_RATIO: return m->ratio * c->kn;
+  default: return 8.0 * m->p.Gstar * patch->a;
+  }
+}
+
+/* eta_t of the damping setting for a spring of stiffness K. */
+DC_INLINE double ct_dashpot(const dc_classical_tangential *m, int damping, double K,
+                      const dc_classical_tangential_contact *c)
+{
+  switch (damping) {
+  case DC_CT_DAMP_GIVEN: return m->p.gammat;
+  case DC_CT_DAMP_RESTITUTION: {
+    double g = m->zeta_t * sqrt(2.0 / 7.0 * c->meff * K);
+    if (!isfinite(g)) g = m->zeta_t * (sqrt(2.0 / 7.0 * c->meff) * sqrt(K));
+    return g;
+  }
+  case DC_CT_DAMP_NORMAL: return c->gamman;
+  default: return 0.0;
+  }
+}
+
+/* Notes 4.5-4.7: F = K s + eta v, |F| <= lim; a sliding spring is set to
+   (F - eta v)/K. */
+DC_INLINE void ct_spring_dashpot(double K, double eta, double lim, const double *du, const double *v, double *s,
+                           double *F, double *kt, int *sliding)
+{
+  double Fv[3];
+  for (int k = 0; k < 3; k++) {
+    s[k] += du[k];
+    Fv[k] = eta * v[k];
+    F[k] = K * s[k] + Fv[k];
+  }
+  *sliding = ct_limit_force(F, lim);
+  *kt = *sliding ? 0.0 : K;
+  if (*sliding) {
+    if (K > 0.0)
+      for (int k = 0; k < 3; k++) s[k] = (F[k] - Fv[k]) / K;
+    else
+      s[0] = s[1] = s[2] = 0.0;
+  }
+}
+
+/* Notes 4.7, LTH and ZZYt: the elastic force of the spring s (capped at
+   d = 3 lim / (2 K0)) and its stiffness K0 (1 - x)^1/2. */
+static inline void ct_langston_spring(double K0, double lim, const double *du, double *s, double *Fe, double *kt,
+                            double *d, int *at_limit)
+{
+  for (int k = 0; k < 3; k++) s[k] += du[k];
+  *at_limit = 0;
+  if (!(K0 > 0.0) || !(lim > 0.0)) {
+    s[0] = s[1] = s[2] = 0.0;
+    Fe[0] = Fe[1] = Fe[2] = 0.0;
+    *kt = 0.0;
+    *d = 0.0;
+    *at_limit = lim == 0.0;
+    return;
+  }
+  *d = 1.5 * (lim / K0);
+  const double r = ct_norm3(s), x = r > 0.0 ? r / *d : 0.0;
+  if (x >= 1.0) {
+    /* at the limit (d may underflow to 0: the direction from s itself) */
+    for (int k = 0; k < 3; k++) {
+      const double e = s[k] / r;
+      s[k] = e * *d;
+      Fe[k] = e * lim;
+    }
+    *kt = 0.0;
+    *at_limit = 1;
+    return;
+  }
+  /* mu F_n (1 - (1 - x)^3/2) */
+  const double f = -lim * expm1(1.5 * log1p(-x));
+  for (int k = 0; k < 3; k++) Fe[k] = r > 0.0 ? s[k] / r * f : 0.0;
+  *kt = K0 * sqrt(1.0 - x);
+}
+
+/* Notes 4.8, Walton-Braun, integrated exactly along the step: F the force,
+   R the force at the last reversal, lim = mu F_n. */
+static inline void ct_incremental_step(double K0, double lim, const double *du, double *F, double *R, double *kt,
+                             int *sliding)
+{
+  if (!(lim > 0.0) || !(K0 > 0.0)) {
+    /* no friction, or no spring: nothing can be held */
+    F[0] = F[1] = F[2] = 0.0;
+    R[0] = R[1] = R[2] = 0.0;
+    *kt = 0.0;
+    *sliding = lim == 0.0;
+    return;
+  }
+  ct_limit_force(F, lim);   /* a smaller normal force clips the state */
+  ct_limit_force(R, lim);
+  const double L = ct_norm3(du);
+  double e[3];
+  if (L > 0.0) {
+    for (int k = 0; k < 3; k++) e[k] = du[k] / L;
+    const double rev = du[0] * (F[0] - R[0]) + du[1] * (F[1] - R[1]) + du[2] * (F[2] - R[2]);
+    if (rev < 0.0)
+      for (int k = 0; k < 3; k++) R[k] = F[k];
+  } else {
+    const double f = ct_norm3(F);
+    if (f > 0.0) for (int k = 0; k < 3; k++) e[k] = F[k] / f;
+    else e[0] = e[1] = e[2] = 0.0;
+  }
+  const double T = F[0] * e[0] + F[1] * e[1] + F[2] * e[2];
+  const double Ts = R[0] * e[0] + R[1] * e[1] + R[2] * e[2];
+  const double D = lim - Ts;   /* >= 0 since |R| <= lim */
+  double u0;                   /* 1 - (T - T*)/D in [0, 1] */
+  if (T - Ts <= 0.0) u0 = 1.0;
+  else if (D > 0.0) u0 = fmax(0.0, 1.0 - (T - Ts) / D);
+  else u0 = 0.0;
+  /* du/dx = -K0 u^1/3 / D: u^2/3 = u0^2/3 - 2 K0 x / (3 D); dT = D (u0 - u) */
+  double dT = 0.0, u1 = u0;
+  if (L > 0.0 && u0 > 0.0 && D > 0.0) {
+    const double c23 = cbrt(u0 * u0);
+    const double y = 2.0 * K0 * (L / D) / (3.0 * c23);   /* fraction of u0^2/3 used */
+    if (y >= 1.0 || !isfinite(y)) { dT = D * u0; u1 = 0.0; }
+    else {
+      dT = -D * u0 * expm1(1.5 * log1p(-y));
+      u1 = u0 * (1.0 - y) * sqrt(1.0 - y);
+    }
+  }
+  for (int k = 0; k < 3; k++) F[k] += dT * e[k];
+  *sliding = ct_limit_force(F, lim) || u1 == 0.0;
+  *kt = *sliding ? 0.0 : K0 * cbrt(u1);
+}
+
+DC_INLINE int dc_classical_tangential_step_law(int law, const dc_classical_tangential *m, const dc_patch *patch,
+                                               const dc_classical_tangential_contact *c, const double n[3],
+                                               const double du[3], const double vt[3], double dt,
+                                               dc_classical_tangential_state *h, dc_classical_tangential_out *out)
+{
+  /* domain */
+  /* domain: every input finite (one sum, dc/inline.h), then the ranges */
+  const double *sp = h->spring;
+  double chk = ((dc_nf(patch->a) + dc_nf(patch->F_bound)) + (dc_nf(patch->formed) + dc_nf(c->meff))) +
+               ((dc_nf(n[0]) + dc_nf(n[1])) + (dc_nf(n[2]) + dc_nf(vt[0]))) +
+               ((dc_nf(vt[1]) + dc_nf(vt[2])) + (dc_nf(sp[0]) + dc_nf(sp[1]))) +
+               (dc_nf(sp[2]) + (dc_nf(c->kn) + dc_nf(c->gamman)));
+  if (du) chk += (dc_nf(du[0]) + dc_nf(du[1])) + dc_nf(du[2]);
+  if (law == DC_CT_INCREMENTAL) chk += (dc_nf(h->rev[0]) + dc_nf(h->rev[1])) + dc_nf(h->rev[2]);
+  if (chk != 0.0) return DC_EDOM;
+  if (!(patch->a >= 0.0 && patch->F_bound >= 0.0 && c->meff > 0.0 && c->kn >= 0.0 && c->gamman >= 0.0))
+    return DC_EDOM;
+  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
+  if (!du && !(dt > 0.0 && dt <= DBL_MAX)) return DC_EDOM;
+  double d[3], v[3] = {vt[0], vt[1], vt[2]};
+  if (du) {
+    d[0] = du[0]; d[1] = du[1]; d[2] = du[2];
+  } else {
+    for (int k = 0; k < 3; k++) d[k] = vt[k] * dt;
+    if (!ct_finite3(d)) return DC_ERANGE;
+  }
+
+  dc_classical_tangential_out o;
+  dc_classical_tangential_state s;   /* the laws but INCREMENTAL neither read nor write h->rev */
+  memcpy(s.spring, h->spring, sizeof s.spring);
+  if (law == DC_CT_INCREMENTAL) memcpy(s.rev, h->rev, sizeof s.rev);
+  else s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+  o.Ft[0] = o.Ft[1] = o.Ft[2] = 0.0;
+  o.kt = o.gammat = 0.0;
+  o.sliding = 0;
+  if (!(patch->formed != 0.0)) {
+    s.spring[0] = s.spring[1] = s.spring[2] = 0.0;
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    ct_store(law, &s, h);
+    *out = o;
+    return DC_OK;
+  }
+  ct_project_plane(d, n);
+  ct_project_plane(v, n);
+  ct_turn_into_plane(s.spring, n);
+  if (law == DC_CT_INCREMENTAL) ct_turn_into_plane(s.rev, n);
+  const double lim = m->p.mu * patch->F_bound;
+  if (!(lim <= DBL_MAX)) return DC_ERANGE;
+
+  switch (law) {
+  case DC_CT_COULOMB: {
+    /* notes 4.2: F = mu F_n v/|v|, v from vt scaled to order one (exactly:
+       a subnormal vt has too few bits to give a direction) */
+    int e;
+    frexp(fmax(fabs(vt[0]), fmax(fabs(vt[1]), fabs(vt[2]))), &e);
+    for (int k = 0; k < 3; k++) v[k] = ldexp(vt[k], -e);
+    ct_project_plane(v, n);
+    const double vv = ct_norm3(v);
+    if (vv > 0.0) {
+      for (int k = 0; k < 3; k++) o.Ft[k] = v[k] / vv * lim;
+      o.sliding = 1;
+    }
+    break;
+  }
+  case DC_CT_VISCOUS:
+  case DC_CT_VISCOUS_SLIDING:
+    /* notes 4.3, 4.4: F = eta_t v (|F| <= mu F_n) */
+    o.gammat = m->p.gammat;
+    for (int k = 0; k < 3; k++) o.Ft[k] = o.gammat * v[k];
+    if (law == DC_CT_VISCOUS_SLIDING) o.sliding = ct_limit_force(o.Ft, lim);
+    break;
+  case DC_CT_SPRING_SLIDING:
+  case DC_CT_SPRING_DASHPOT_SLIDING:
+  case DC_CT_DI_RENZO:
+  case DC_CT_TSUJI: {
+    /* notes 4.5-4.7: F = K s + eta v, |F| <= mu F_n */
+    double K, eta;
+    if (law == DC_CT_DI_RENZO) K = 16.0 / 3.0 * m->p.Gstar * patch->a;
+    else if (law == DC_CT_TSUJI) K = 8.0 * m->p.Gstar * patch->a;
+    else K = ct_spring_stiffness(m, patch, c);
+    if (law == DC_CT_TSUJI) eta = c->gamman;
+    else if (law == DC_CT_SPRING_SLIDING) eta = 0.0;
+    else eta = ct_dashpot(m, m->p.damping, K, c);
+    if (!(K <= DBL_MAX) || !(eta <= DBL_MAX)) return DC_ERANGE;
+    o.gammat = eta;
+    ct_spring_dashpot(K, eta, lim, d, v, s.spring, o.Ft, &o.kt, &o.sliding);
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    break;
+  }
+  case DC_CT_LANGSTON:
+  case DC_CT_ZHENG: {
+    /* notes 4.7: LTH elastic force; LTH or ZZYt viscous force */
+    const double K0 = 8.0 * m->p.Gstar * patch->a;
+    if (!(K0 <= DBL_MAX)) return DC_ERANGE;
+    double Fe[3], kt, dlim;
+    int at_limit;
+    ct_langston_spring(K0, lim, d, s.spring, Fe, &kt, &dlim, &at_limit);
+    double eta = 0.0;
+    if (law == DC_CT_LANGSTON) {
+      eta = m->p.eta_l * sqrt(4.0 * c->meff * kt);
+      if (!isfinite(eta)) eta = m->p.eta_l * 2.0 * (sqrt(c->meff) * sqrt(kt));
+    } else if (dlim > 0.0) {
+      const double A = m->p.t_visc;
+      const double f = 1.0 - 0.4 * A * (ct_norm3(v) / dlim);
+      eta = f > 0.0 ? A * f * kt : 0.0;
+    }
+    o.gammat = eta;
+    for (int k = 0; k < 3; k++) o.Ft[k] = Fe[k] + eta * v[k];
+    o.sliding = ct_limit_force(o.Ft, lim) || at_limit;
+    o.kt = o.sliding ? 0.0 : kt;
+    s.rev[0] = s.rev[1] = s.rev[2] = 0.0;
+    break;
+  }
+  default: {
+    /* notes 4.8, corrected: Walton-Braun incremental slip */
+    const double K0 = ct_spring_stiffness(m, patch, c);
+    if (!(K0 <= DBL_MAX)) return DC_ERANGE;
+    ct_incremental_step(K0, lim, d, s.spring, s.rev, &o.kt, &o.sliding);
+    for (int k = 0; k < 3; k++) o.Ft[k] = s.spring[k];
+    break;
+  }
+  }
+  if (((dc_nf(o.Ft[0]) + dc_nf(o.Ft[1])) + (dc_nf(o.Ft[2]) + dc_nf(o.kt))) +
+      ((dc_nf(s.spring[0]) + dc_nf(s.spring[1])) + (dc_nf(s.spring[2]) + dc_nf(o.gammat))) +
+      ((dc_nf(s.rev[0]) + dc_nf(s.rev[1])) + dc_nf(s.rev[2])) != 0.0)
+    return DC_ERANGE;
+  ct_store(law, &s, h);
+  *out = o;
+  return DC_OK;
+}
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,18 @@
+/* Hot-path helpers of the laws. DC_INLINE: a static helper of a law's hot path, always inlined where the
+   compiler supports it, so that the values a step passes between its parts
+   stay in registers (an out-of-line helper's arrays go through memory). */
+#ifndef DC_INLINE_H
+#define DC_INLINE_H
+
+#if defined(__GNUC__)
+#define DC_INLINE static inline __attribute__((always_inline))
+#else
+#define DC_INLINE static inline
+#endif
+
+/* 0 for a finite x, NaN otherwise: a sum of them is 0 exactly when every
+   term is finite (never overflows), so one comparison checks many inputs
+   without a branch each. */
+static inline double dc_nf(double x) { return x - x; }
+
+#endif
