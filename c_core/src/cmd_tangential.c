@@ -559,18 +559,17 @@ static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const d
 
 /* ------------------------------------------------------------------ */
 
-static inline double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 /* Turns v (normal to a) with the rotation taking the unit a to the unit b
    (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
    c = a.b, w = a x b), then removes what is left along b. */
 DC_INLINE void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
 {
-  const double wv = dot3(w, v) * ic;
+  const double wv = dc_dot3(w, v) * ic;
   double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
                  c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
                  c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
-  const double rn = dot3(r, b);
+  const double rn = dc_dot3(r, b);
   for (int k = 0; k < 3; k++) out[k] = r[k] - rn * b[k];
 }
 
@@ -578,7 +577,7 @@ DC_INLINE void turn(const double *w, double c, double ic, const double *b, const
 static inline void project_keep(const double *b, double *v)
 {
   double e[3];
-  const double l = norm_dir(3, v, e), en = dot3(e, b);
+  const double l = norm_dir(3, v, e), en = dc_dot3(e, b);
   double r[3] = {e[0] - en * b[0], e[1] - en * b[1], e[2] - en * b[2]};
   const double lr = norm_dir(3, r, r);
   for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
@@ -604,7 +603,7 @@ DC_INLINE int cmd_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
         (p->twisting == 0 || p->twisting == 1) && pair_ok(m) && Fb >= 0.0 && b >= 0.0 && a >= b &&
         (a == 0.0 || b >= 1e-150 * a) && (!p->dissipation || dt > 0.0)))
     return DC_EDOM;
-  if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
+  if (!(fabs(dc_dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   /* the piece counts are range-checked as doubles before the conversion
      to int (a corrupted count beyond int's range would make it undefined)
      and must then be whole numbers */
@@ -660,7 +659,7 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
                            double axl, cmd_frame *f)
 {
   const double a = patch->a, b = patch->b;
-  const double nn = dot3(n, n), in = 1.0 / sqrt(nn);
+  const double nn = dc_dot3(n, n), in = 1.0 / sqrt(nn);
   for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
   const double *nh = f->nh;
   f->tnu = m->s1 / m->s0;
@@ -674,16 +673,16 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
     double cn;
     axis_compliances(f->tnu, &f->el, &f->cm, &cn);
     f->rho = f->cm / cn;   /* k_minor / k_major */
-    const double an = dot3(patch->axis, nh);
+    const double an = dc_dot3(patch->axis, nh);
     for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
     const double al = norm_dir(3, f->ax, f->ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
   }
   f->k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, f->cm);
-  const double dn = dot3(du, nh);
+  const double dn = dc_dot3(du, nh);
   for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
   if (f->ell) {
-    const double da = (1.0 - f->rho) * dot3(f->ax, f->dut);
+    const double da = (1.0 - f->rho) * dc_dot3(f->ax, f->dut);
     for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
   } else {
     for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
@@ -698,7 +697,7 @@ DC_INLINE const dc_cmd_piece *cmd_turned_profile(const dc_cmd_state *h, const do
 {
   const double *np0 = h->n_prev;
   if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return h->seg;
-  const double c = dot3(np0, nh);
+  const double c = dc_dot3(np0, nh);
   if (c > -0.999) {   /* turned straight from h into the copies */
     const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
                          np0[0] * nh[1] - np0[1] * nh[0]};
@@ -735,7 +734,7 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   const int nfp = profile_step3(nsu, seg, r, f->d, L0, pf, &stick, I);
   for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
   {
-    const double fn = dot3(F, nh);
+    const double fn = dc_dot3(F, nh);
     for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
   }
   double kt = stick * f->k_major;
@@ -743,7 +742,7 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
     double dir[3];
     double l = norm_dir(3, f->dut, dir);
     if (!(l > 0.0)) l = norm_dir(3, F, dir);
-    const double ea = dot3(dir, f->ax);
+    const double ea = dc_dot3(dir, f->ax);
     kt *= l > 0.0 ? f->rho + (1.0 - f->rho) * ea * ea : 0.5 * (1.0 + f->rho);
   }
   const double lim = mu * Fb;
@@ -760,11 +759,11 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   }
   {
     double e[3];
-    const double fn = dot3(F, nh);   /* the viscous part may leave the plane by rounding */
+    const double fn = dc_dot3(F, nh);   /* the viscous part may leave the plane by rounding */
     for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
     /* clipped onto the limit (rounding, dissipation); the squares decide
        only where they are normal doubles clearly inside it */
-    const double f2 = dot3(F, F), l2 = lim * lim;
+    const double f2 = dc_dot3(F, F), l2 = lim * lim;
     if (!(f2 >= DBL_MIN && l2 <= DBL_MAX && f2 < (1.0 - 1e-14) * l2) && norm_dir(3, F, e) > lim)
       for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
@@ -851,7 +850,7 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   int ns, nt;
   if (cmd_check(p, m, patch, n, du, dphi, dt, h, &ns, &nt) != DC_OK) return DC_EDOM;
   const double a = patch->a, b = patch->b;
-  const double axl = dot3(patch->axis, patch->axis);
+  const double axl = dc_dot3(patch->axis, patch->axis);
   if (a > b && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
 
   /* not formed, or no area: the history starts afresh */

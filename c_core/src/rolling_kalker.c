@@ -1,6 +1,7 @@
 /* Kalker's linear creep theory and the Vermeulen-Johnson saturation
    (dc/rolling_kalker.h). */
 #include "dc/rolling_kalker.h"
+#include "dc/inline.h"
 #include "dc/elliptic_integrals.h"
 #include "dc/status.h"
 #include "scaled_product.h"
@@ -120,8 +121,6 @@ static const double kalker_lnc[DC_KALKER_NODES][4][KALKER_NU_TERMS] = {
 };
 /* KALKER TABLE END */
 
-static int finite3(const double *v) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
-static double dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 static void cross3(const double *a, const double *b, double *c)
 {
   c[0] = a[1] * b[2] - a[2] * b[1];
@@ -367,7 +366,7 @@ static void tensor2(const dc_rolling_curvature *c, const double *e1, const doubl
     K[1] = 0.0;
     return;
   }
-  const double u = dot3(c->d1, e1), v = dot3(c->d1, e2), d = c->k1 - c->k2;
+  const double u = dc_dot3(c->d1, e1), v = dc_dot3(c->d1, e2), d = c->k1 - c->k2;
   K[0] = c->k2 + d * u * u;
   K[1] = d * u * v;
   K[2] = c->k2 + d * v * v;
@@ -377,15 +376,15 @@ static int curvature_ok(const dc_rolling_curvature *c, const double *n)
 {
   if (!(isfinite(c->k1) && isfinite(c->k2))) return 0;
   if (c->k1 == c->k2) return 1;
-  if (!finite3(c->d1)) return 0;
-  return fabs(dot3(c->d1, c->d1) - 1.0) <= 1e-6 && fabs(dot3(c->d1, n)) <= 1e-6;
+  if (!dc_finite3(c->d1)) return 0;
+  return fabs(dc_dot3(c->d1, c->d1) - 1.0) <= 1e-6 && fabs(dc_dot3(c->d1, n)) <= 1e-6;
 }
 
 /* No rolling velocity (a relative curvature that is not positive
    definite): V = 0, the slip and spin as they are. */
 static int still(const double s[3], double spin, dc_rolling_kin *k)
 {
-  if (!finite3(s) || !isfinite(spin)) return DC_ERANGE;
+  if (!dc_finite3(s) || !isfinite(spin)) return DC_ERANGE;
   k->V = 0.0;
   k->ex[0] = k->ex[1] = k->ex[2] = 0.0;
   memcpy(k->slip, s, 3 * sizeof(double));
@@ -428,8 +427,8 @@ static void raise_relative(double Ki[3], double Kj[3], double k_min)
 static int kinematics(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
                       const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
 {
-  if (!finite3(n) || !finite3(dv) || !finite3(dw)) return DC_EDOM;
-  if (!(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
+  if (!dc_finite3(n) || !dc_finite3(dv) || !dc_finite3(dw)) return DC_EDOM;
+  if (!(fabs(dc_dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   if (!curvature_ok(ci, n) || !curvature_ok(cj, n)) return DC_EDOM;
   /* velocities below 2^-900 scaled up first (exactly; V, slip and spin
      scaled back): subnormal ones have too few bits for a direction */
@@ -455,18 +454,18 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
        no basis needed, the same Vbar */
     const double ks = ci->k1 + cj->k1;
     if (ks > 0.0 && isfinite(ks) && ks >= k_min) {
-      const double dvn = dot3(dv, n);
+      const double dvn = dc_dot3(dv, n);
       double s[3], r[3], u[3];
       for (int i = 0; i < 3; i++) s[i] = dv[i] - dvn * n[i];
       cross3(dw, n, r);
       const double h = 0.5 * (ci->k1 / ks - cj->k1 / ks);
       for (int i = 0; i < 3; i++) u[i] = r[i] / ks + h * s[i];
-      const double un = dot3(u, n);
+      const double un = dc_dot3(u, n);
       for (int i = 0; i < 3; i++) u[i] -= un * n[i];
-      double V = sqrt(dot3(u, u));
+      double V = sqrt(dc_dot3(u, u));
       if (!(V > 1e-150 && V < 1e150)) V = hypot(hypot(u[0], u[1]), u[2]);   /* squares out of range */
-      const double spin = dot3(dw, n);
-      if (!isfinite(V) || !finite3(s) || !isfinite(spin)) return DC_ERANGE;
+      const double spin = dc_dot3(dw, n);
+      if (!isfinite(V) || !dc_finite3(s) || !isfinite(spin)) return DC_ERANGE;
       k->V = V;
       /* a subnormal V has too few bits to divide by: u scaled up first */
       const double sc = V < DBL_MIN ? 0x1p600 : 1.0;
@@ -481,23 +480,23 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
   double e1[3], e2[3];
   const double *d = ci->k1 != ci->k2 ? ci->d1 : (cj->k1 != cj->k2 ? cj->d1 : NULL);
   if (d) {
-    const double dn = dot3(d, n);
+    const double dn = dc_dot3(d, n);
     for (int i = 0; i < 3; i++) e1[i] = d[i] - dn * n[i];
   } else {
     const double ax[3] = {fabs(n[0]) < 0.6 ? 1.0 : 0.0, fabs(n[0]) < 0.6 ? 0.0 : 1.0, 0.0};
     cross3(n, ax, e1);
   }
-  const double l1 = sqrt(dot3(e1, e1));
+  const double l1 = sqrt(dc_dot3(e1, e1));
   for (int i = 0; i < 3; i++) e1[i] /= l1;
   cross3(n, e1, e2);
   double Ki[3], Kj[3];
   tensor2(ci, e1, e2, Ki);
   tensor2(cj, e1, e2, Kj);
-  if (k_min > 0.0 && finite3(Ki) && finite3(Kj)) raise_relative(Ki, Kj, k_min);
-  const double dvn = dot3(dv, n);
+  if (k_min > 0.0 && dc_finite3(Ki) && dc_finite3(Kj)) raise_relative(Ki, Kj, k_min);
+  const double dvn = dc_dot3(dv, n);
   double s[3];
   for (int i = 0; i < 3; i++) s[i] = dv[i] - dvn * n[i];
-  const double spin = dot3(dw, n);
+  const double spin = dc_dot3(dw, n);
   /* scaled by the trace of the sum, so that det is in (0, 1/4] */
   const double tr = (Ki[0] + Kj[0]) + (Ki[2] + Kj[2]);
   if (!(tr > 0.0)) {
@@ -511,13 +510,13 @@ static int kinematics(const double n[3], const dc_rolling_curvature *ci, const d
     if (!singular_ok) return DC_EDOM;
     return still(s, spin, k);
   }
-  const double s1 = dot3(s, e1), s2 = dot3(s, e2);
+  const double s1 = dc_dot3(s, e1), s2 = dc_dot3(s, e2);
   double r[3];
   cross3(dw, n, r);
   /* rhs = [dw x n + (K_i - K_j) s / 2] / tr */
   const double D0 = Ki[0] / tr - Kj[0] / tr, D1 = Ki[1] / tr - Kj[1] / tr, D2 = Ki[2] / tr - Kj[2] / tr;
-  const double q1 = dot3(r, e1) / tr + 0.5 * (D0 * s1 + D1 * s2);
-  const double q2 = dot3(r, e2) / tr + 0.5 * (D1 * s1 + D2 * s2);
+  const double q1 = dc_dot3(r, e1) / tr + 0.5 * (D0 * s1 + D1 * s2);
+  const double q2 = dc_dot3(r, e2) / tr + 0.5 * (D1 * s1 + D2 * s2);
   const double u1 = (S2 * q1 - S1 * q2) / det, u2 = (S0 * q2 - S1 * q1) / det;
   const double V = hypot(u1, u2);
   if (!isfinite(V) || !isfinite(s1) || !isfinite(s2)) return DC_ERANGE;
@@ -599,24 +598,24 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   if (!(isfinite(p->mu) && p->mu >= 0.0 && isfinite(p->v_min) && p->v_min > 0.0)) return DC_EDOM;
   if (p->model != DC_ROLLING_KALKER && p->model != DC_ROLLING_VJ) return DC_EDOM;
   if (!(isfinite(rm->G) && rm->G > 0.0 && rm->nu >= 0.0 && rm->nu <= 0.5)) return DC_EDOM;
-  if (!finite3(n) || !(fabs(dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
-  if (!(isfinite(k->V) && k->V >= 0.0) || !finite3(k->ex) || !finite3(k->slip) || !isfinite(k->spin))
+  if (!dc_finite3(n) || !(fabs(dc_dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
+  if (!(isfinite(k->V) && k->V >= 0.0) || !dc_finite3(k->ex) || !dc_finite3(k->slip) || !isfinite(k->spin))
     return DC_EDOM;
   const double a = patch->a, b = patch->b;
   if (!(isfinite(a) && isfinite(b) && a >= b && b >= 0.0 && isfinite(patch->F_bound) &&
-        patch->F_bound >= 0.0 && isfinite(patch->formed) && finite3(patch->axis)))
+        patch->F_bound >= 0.0 && isfinite(patch->formed) && dc_finite3(patch->axis)))
     return DC_EDOM;
   if (patch->formed == 0.0 || a == 0.0 || k->V <= p->v_min) {
     zero_out(out);
     return DC_OK;
   }
   if (!(b > 0.0 && b >= 1e-150 * a)) return DC_EDOM;
-  if (!(fabs(dot3(k->ex, k->ex) - 1.0) <= 1e-6 && fabs(dot3(k->ex, n)) <= 1e-6)) return DC_EDOM;
+  if (!(fabs(dc_dot3(k->ex, k->ex) - 1.0) <= 1e-6 && fabs(dc_dot3(k->ex, n)) <= 1e-6)) return DC_EDOM;
   const double *ex = k->ex;
   double ey[3];
   cross3(n, ex, ey);
   const double V = k->V;
-  const double xi_x = dot3(k->slip, ex) / V, xi_y = dot3(k->slip, ey) / V, phi = k->spin / V;
+  const double xi_x = dc_dot3(k->slip, ex) / V, xi_y = dc_dot3(k->slip, ey) / V, phi = k->spin / V;
   /* coefficients: along an axis of the patch, Kalker's; oblique, those of
      the effective axis ratio, c33 scaled by the lateral second moment */
   dc_kalker_coef c;
@@ -626,8 +625,8 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
     c.c23 = rm->circle[2];
     c.c33 = rm->circle[3];
   } else {
-    if (!(fabs(dot3(patch->axis, patch->axis) - 1.0) <= 1e-6)) return DC_EDOM;
-    double ca = fabs(dot3(ex, patch->axis));
+    if (!(fabs(dc_dot3(patch->axis, patch->axis) - 1.0) <= 1e-6)) return DC_EDOM;
+    double ca = fabs(dc_dot3(ex, patch->axis));
     if (ca > 1.0) ca = 1.0;
     const double sa = sqrt((1.0 - ca) * (1.0 + ca)), r = b / a;
     const double h_along = hypot(ca, r * sa), h_across = hypot(sa, r * ca);
@@ -702,7 +701,7 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   }
   double F[3];
   for (int i = 0; i < 3; i++) F[i] = Fx * ex[i] + Fy * ey[i];
-  if (!finite3(F) || !isfinite(Mz) || !isfinite(Fx) || !isfinite(Fy)) return DC_ERANGE;
+  if (!dc_finite3(F) || !isfinite(Mz) || !isfinite(Fx) || !isfinite(Fy)) return DC_ERANGE;
   memcpy(out->F, F, sizeof F);
   out->Mz = Mz;
   out->Fx = Fx;

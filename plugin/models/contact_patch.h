@@ -105,7 +105,7 @@ public:
 
   /* The patch of a touching contact; under a stock normal model the circle
      of radius (R delta)^1/2 with the elastic force kn delta. */
-  void read(const SurfacesIntersectData &sidata, dc_patch &p) const
+  __attribute__((always_inline)) inline void read(const SurfacesIntersectData &sidata, dc_patch &p) const
   {
     if (written_) {
       p = *written_;

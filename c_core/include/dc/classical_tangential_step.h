@@ -28,24 +28,20 @@ static inline double ct_norm3_scaled(const double *v)
   return mx * sqrt(a * a + b * b + c * c);
 }
 
-DC_INLINE double ct_dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 DC_INLINE double ct_norm3(const double *v)
 {
-  const double s = ct_dot3(v, v);
+  const double s = dc_dot3(v, v);
   return s >= DBL_MIN && s <= DBL_MAX ? sqrt(s) : ct_norm3_scaled(v);
 }
-
-DC_INLINE int ct_finite3(const double *v) { return dc_nf(v[0]) + dc_nf(v[1]) + dc_nf(v[2]) == 0.0; }
 
 /* v minus its part along the unit n, scaled back to its former length
    (LIGGGHTS' rotation of the shear history). */
 DC_INLINE void ct_turn_into_plane(double *v, const double *n)
 {
-  const double vn = ct_dot3(v, n);
+  const double vn = dc_dot3(v, n);
   if (vn == 0.0) return;   /* in the plane already (or zero) */
   double w[3] = {v[0] - vn * n[0], v[1] - vn * n[1], v[2] - vn * n[2]};
-  const double len2 = ct_dot3(v, v), lw2 = ct_dot3(w, w);
+  const double len2 = dc_dot3(v, v), lw2 = dc_dot3(w, w);
   const double q = len2 / lw2;
   if (len2 >= DBL_MIN && len2 <= DBL_MAX && lw2 >= DBL_MIN && lw2 <= DBL_MAX && q <= DBL_MAX) {   /* one root */
     const double f = sqrt(q);
@@ -56,7 +52,7 @@ DC_INLINE void ct_turn_into_plane(double *v, const double *n)
   if (!(lw > 0.0)) { v[0] = v[1] = v[2] = 0.0; return; }
   const double f = len / lw;
   for (int k = 0; k < 3; k++) v[k] = w[k] * f;
-  if (!ct_finite3(v)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
+  if (!dc_finite3(v)) for (int k = 0; k < 3; k++) v[k] = w[k] / lw * len;
 }
 
 /* The history back: the laws other than INCREMENTAL own only the spring. */
@@ -68,14 +64,14 @@ DC_INLINE void ct_store(int law, const dc_classical_tangential_state *s, dc_clas
 
 DC_INLINE void ct_project_plane(double *v, const double *n)
 {
-  const double vn = ct_dot3(v, n);
+  const double vn = dc_dot3(v, n);
   for (int k = 0; k < 3; k++) v[k] -= vn * n[k];
 }
 
 /* Scales F onto |F| = lim when it exceeds it; 1 if it did. */
 DC_INLINE int ct_limit_force(double *F, double lim)
 {
-  const double f2 = ct_dot3(F, F), lim2 = lim * lim;
+  const double f2 = dc_dot3(F, F), lim2 = lim * lim;
   if (f2 <= lim2 && lim2 <= DBL_MAX && (f2 >= DBL_MIN || f2 == 0.0) && lim2 >= DBL_MIN) return 0;   /* no root */
   const double f = ct_norm3(F);
   if (!(f > lim)) return 0;
@@ -241,7 +237,7 @@ DC_INLINE int dc_classical_tangential_step_law(int law, const dc_classical_tange
     d[0] = du[0]; d[1] = du[1]; d[2] = du[2];
   } else {
     for (int k = 0; k < 3; k++) d[k] = vt[k] * dt;
-    if (!ct_finite3(d)) return DC_ERANGE;
+    if (!dc_finite3(d)) return DC_ERANGE;
   }
 
   dc_classical_tangential_out o;

@@ -15,4 +15,9 @@
    without a branch each. */
 static inline double dc_nf(double x) { return x - x; }
 
+/* Whether the three components are finite (one comparison). */
+DC_INLINE int dc_finite3(const double *v) { return dc_nf(v[0]) + dc_nf(v[1]) + dc_nf(v[2]) == 0.0; }
+
+DC_INLINE double dc_dot3(const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
 #endif
