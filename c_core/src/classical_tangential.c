@@ -113,5 +113,5 @@ int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patc
                                  const double du[3], const double vt[3], double dt,
                                  dc_classical_tangential_state *h, dc_classical_tangential_out *out)
 {
-  return dc_classical_tangential_step_law(m->p.law, m, patch, c, n, du, vt, dt, h, out);
+  return dc_classical_tangential_step_law(m->p.law, 1, m, patch, c, n, du, vt, dt, h, out);
 }

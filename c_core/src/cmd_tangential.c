@@ -586,10 +586,25 @@ static inline void project_keep(const double *b, double *v)
 /* ------------------------------------------------------------------ */
 /* The step in parts (each inlined: one function's code).              */
 
-/* Inputs finite and in their domain; the stored piece counts in *ns, *nt
-   (nt 0 without twisting, whose part of h is neither read nor written). */
+/* The stored piece counts in *ns, *nt (nt 0 without twisting, whose part
+   of h is neither read nor written): DC_EDOM unless whole numbers in
+   [0, DC_CMD_MAX_SEG]. The counts are range-checked as doubles before the
+   conversion to int (a corrupted count beyond int's range would make it
+   undefined). */
+DC_INLINE int cmd_counts(const dc_cmd_params *p, const dc_cmd_state *h, int *ns_out, int *nt_out)
+{
+  if (!(h->nseg >= 0.0 && h->nseg <= DC_CMD_MAX_SEG && (!p->twisting || (h->nseg_t >= 0.0 && h->nseg_t <= DC_CMD_MAX_SEG))))
+    return DC_EDOM;
+  const int ns = (int)h->nseg, nt = p->twisting ? (int)h->nseg_t : 0;
+  if (!(h->nseg == (double)ns && (!p->twisting || h->nseg_t == (double)nt))) return DC_EDOM;
+  *ns_out = ns;
+  *nt_out = nt;
+  return DC_OK;
+}
+
+/* Inputs finite and in their domain (the counts apart: cmd_counts). */
 DC_INLINE int cmd_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const double n[3],
-                        const double du[3], double dphi, double dt, const dc_cmd_state *h, int *ns_out, int *nt_out)
+                        const double du[3], double dphi, double dt, const dc_cmd_state *h, int ns, int nt)
 {
   const double a = patch->a, b = patch->b, Fb = patch->F_bound, mu = p->mu;
   double chk = ((dc_nf(a) + dc_nf(b)) + (dc_nf(Fb) + dc_nf(patch->formed))) +
@@ -603,15 +618,7 @@ DC_INLINE int cmd_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
         (p->twisting == 0 || p->twisting == 1) && pair_ok(m) && Fb >= 0.0 && b >= 0.0 && a >= b &&
         (a == 0.0 || b >= 1e-150 * a) && (!p->dissipation || dt > 0.0)))
     return DC_EDOM;
-  if (!(fabs(dc_dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
-  /* the piece counts are range-checked as doubles before the conversion
-     to int (a corrupted count beyond int's range would make it undefined)
-     and must then be whole numbers */
-  if (!(h->nseg >= 0.0 && h->nseg <= DC_CMD_MAX_SEG && h->a_prev >= 0.0 &&
-        (!p->twisting || (h->nseg_t >= 0.0 && h->nseg_t <= DC_CMD_MAX_SEG))))
-    return DC_EDOM;
-  const int ns = (int)h->nseg, nt = p->twisting ? (int)h->nseg_t : 0;
-  if (!(h->nseg == (double)ns && (!p->twisting || h->nseg_t == (double)nt))) return DC_EDOM;
+  if (!(fabs(dc_dot3(n, n) - 1.0) <= 1e-6) || !(h->a_prev >= 0.0)) return DC_EDOM;
   /* the stored pieces: their values in independent sums; the
      breakpoints finite and increasing to 1 in one comparison chain (a NaN
      fails every comparison) */
@@ -635,8 +642,6 @@ DC_INLINE int cmd_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
       order &= h->seg_t[j].xi > (j ? h->seg_t[j - 1].xi : 0.0) && h->seg_t[j].xi <= 1.0;
     }
   if (chk != 0.0 || !order) return DC_EDOM;
-  *ns_out = ns;
-  *nt_out = nt;
   return DC_OK;
 }
 
@@ -843,12 +848,13 @@ DC_INLINE void cmd_commit(const dc_cmd_params *p, const double *nh, double a, co
   }
 }
 
-int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
-                const double n[3], const double du[3], double dphi, double dt,
-                dc_cmd_state *h, dc_cmd_out *out)
+/* dc_cmd_step with (checked) or without the check of the inputs' domain. */
+DC_INLINE int cmd_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
+                       const double n[3], const double du[3], double dphi, double dt, dc_cmd_state *h, dc_cmd_out *out)
 {
   int ns, nt;
-  if (cmd_check(p, m, patch, n, du, dphi, dt, h, &ns, &nt) != DC_OK) return DC_EDOM;
+  if (cmd_counts(p, h, &ns, &nt) != DC_OK) return DC_EDOM;
+  if (checked && cmd_check(p, m, patch, n, du, dphi, dt, h, ns, nt) != DC_OK) return DC_EDOM;
   const double a = patch->a, b = patch->b;
   const double axl = dc_dot3(patch->axis, patch->axis);
   if (a > b && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
@@ -881,4 +887,18 @@ int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch
   out->kr = kr;
   cmd_commit(p, f.nh, a, pf, nfp, ns, pt, ntw, nt, h);
   return DC_OK;
+}
+
+int dc_cmd_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
+                const double n[3], const double du[3], double dphi, double dt,
+                dc_cmd_state *h, dc_cmd_out *out)
+{
+  return cmd_step(1, p, m, patch, n, du, dphi, dt, h, out);
+}
+
+int dc_cmd_step_trusted(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
+                        const double n[3], const double du[3], double dphi, double dt,
+                        dc_cmd_state *h, dc_cmd_out *out)
+{
+  return cmd_step(0, p, m, patch, n, du, dphi, dt, h, out);
 }

@@ -177,10 +177,13 @@ public:
       memcpy(&scratch, h, nfields() * sizeof(double));
       h = &scratch;
     }
+    /* the inputs lie in the law's domain by construction (LIGGGHTS' unit
+       normal and velocities, the normal model's patch): the step unchecked,
+       its results checked; on an error the checked step names the cause */
     dc_classical_tangential_out out;
-    const int st = dc_classical_tangential_step_law(LAW, &models[sidata.itype * (ntypes + 1) + sidata.jtype], &p, &c,
-                                                    sidata.en, NULL, vt, update->dt, h, &out);
-    if (st != DC_OK) fail(sidata, p, vt, st);
+    const dc_classical_tangential *m = &models[sidata.itype * (ntypes + 1) + sidata.jtype];
+    if (dc_classical_tangential_step_law(LAW, 0, m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out) != DC_OK)
+      fail(sidata, p, vt, dc_classical_tangential_step(m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out));
     const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
     applyTangentialForce(sidata, F, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);
   }

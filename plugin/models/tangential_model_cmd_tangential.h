@@ -202,9 +202,11 @@ private:
       memcpy(&scratch, h, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
       h = &scratch;
     }
+    /* the inputs lie in the law's domain by construction: the trusted
+       step; on an error the checked step names the cause */
     dc_cmd_out out;
-    const int st = dc_cmd_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out);
-    if (st != DC_OK) {
+    if (dc_cmd_step_trusted(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out) != DC_OK) {
+      const int st = dc_cmd_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out);
       char msg[384];
       snprintf(msg, sizeof msg, "Tangential model cmd_tangential: contact of atom %d: patch a = %g, b = %g, friction "
                "load %g, displacement %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.b, p.F_bound, du[0], du[1],

@@ -7,9 +7,13 @@
    reversal curves and its stable loop against tests/reference/classical.csv),
    the tangential restitution of Deen's damping, the damping forms, 3D
    (plane rotation, i/j swap), the parameter checks, the history fields
-   each law owns, edge magnitudes and a random never-NaN sweep. */
+   each law owns, edge magnitudes and a random never-NaN sweep, in which
+   the inline unchecked step (classical_tangential_step.h, checked = 0)
+   matches the checked one bit for bit on every call the checked one
+   accepts and never returns a non-finite result. */
 #include "check.h"
 #include "dc/classical_tangential.h"
+#include "dc/classical_tangential_step.h"
 #include "dc/status.h"
 #include <float.h>
 #include <string.h>
@@ -638,6 +642,13 @@ static double wild(unsigned long long *s)
 
 static double typical(unsigned long long *s, double lo, double hi) { return lo * pow(hi / lo, check_uniform(s)); }
 
+/* Every field bit for bit (not the padding). */
+static int same_out(const ct_out *a, const ct_out *b)
+{
+  return memcmp(a->Ft, b->Ft, sizeof a->Ft) == 0 && memcmp(&a->kt, &b->kt, sizeof a->kt) == 0 &&
+         memcmp(&a->gammat, &b->gammat, sizeof a->gammat) == 0 && a->sliding == b->sliding;
+}
+
 static void test_random(void)
 {
   unsigned long long s = 0x243f6a8885a308d3ULL;
@@ -687,8 +698,20 @@ static void test_random(void)
       const ct_state h0 = h;
       const double dt = ww ? wild(&s) : 1e-7;
       const int pass_du = check_uniform(&s) >= 0.2;
+      ct_out ou = o0;
+      ct_state hu = h;
+      const int su = dc_classical_tangential_step_law(p.law, 0, &m, &pa, &c, n, pass_du ? du : NULL, vt, dt, &hu, &ou);
       const int st = dc_classical_tangential_step(&m, &pa, &c, n, pass_du ? du : NULL, vt, dt, &h, &o);
       calls++;
+      /* unchecked: the same bits where the checked step accepts the inputs;
+         an error leaves h and out untouched; DC_OK only with finite results */
+      if (st == DC_OK ? (su != DC_OK || !same_out(&ou, &o) || memcmp(&hu, &h, sizeof h))
+                      : su != DC_OK ? (memcmp(&ou, &o0, sizeof o) || memcmp(&hu, &h0, sizeof h))
+                                    : !(dc_finite3(ou.Ft) && dc_finite3(hu.spring) && dc_finite3(hu.rev) &&
+                                        isfinite(ou.kt) && isfinite(ou.gammat))) {
+        if (bad < 10) printf("law %d: unchecked step status %d against %d\n", p.law, su, st);
+        bad++;
+      }
       if (st == DC_OK) {
         ok_calls++;
         const double F = norm3(o.Ft);

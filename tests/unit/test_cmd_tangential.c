@@ -876,7 +876,8 @@ static void test_corrupted_history(void)
    down to b/a = 1e-3, F_bound including 0, now and then not formed),
    normals turning slowly and now and then jumping, displacements from
    1e-6 to 1e2 delta_L, twisting and dissipation on: always DC_OK, finite,
-   |Ft| <= mu F_bound (1 + 1e-12), Ft normal to n, |Mt| <= M_s. */
+   |Ft| <= mu F_bound (1 + 1e-12), Ft normal to n, |Mt| <= M_s; and
+   dc_cmd_step_trusted gives the same status and bits at every step. */
 static void test_random_sweep(void)
 {
   unsigned long long x = 0x2545F4914F6CDD1Dull;
@@ -886,7 +887,7 @@ static void test_random_sweep(void)
   dc_cmd_state h;
   dc_cmd_out o;
   memset(&h, 0, sizeof h);
-  long bad = 0, bound = 0, normal = 0, moment = 0, nonok = 0;
+  long bad = 0, bound = 0, normal = 0, moment = 0, nonok = 0, trusted = 0;
   double a = 1e-4, b = 1e-4, Fb = 1.0, ax[3] = {1, 0, 0};
   for (long i = 0; i < 100000; i++) {
     const double r = check_uniform(&x);
@@ -916,7 +917,12 @@ static void test_random_sweep(void)
     const double mag = dL * pow(10.0, -6.0 + 8.0 * check_uniform(&x));
     double du[3] = {mag * (check_uniform(&x) - 0.5), mag * (check_uniform(&x) - 0.5), mag * (check_uniform(&x) - 0.5)};
     const double dphi = mag / a * (check_uniform(&x) - 0.5);
+    dc_cmd_state ht = h;
+    dc_cmd_out ot;
+    const int stt = dc_cmd_step_trusted(&p, &m, &pa, n, du, dphi, 1e-5, &ht, &ot);
     const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, 1e-5, &h, &o);
+    /* the trusted step: the same status and bits on inputs in the domain */
+    if (stt != st || (st == DC_OK && (memcmp(&ht, &h, sizeof h) || memcmp(&ot, &o, sizeof o)))) trusted++;
     if (st != DC_OK) { nonok++; continue; }
     if (!(isfinite(o.Ft[0]) && isfinite(o.Ft[1]) && isfinite(o.Ft[2]) && isfinite(o.kt) && isfinite(o.Mt) &&
           isfinite(o.kr) && isfinite(o.stick)))
@@ -927,9 +933,9 @@ static void test_random_sweep(void)
     if (pa.formed != 0.0) dc_cmd_twist_slip_moment(p.mu, Fb, pa.a, pa.b, &Ms);
     if (fabs(o.Mt) > Ms * (1.0 + 1e-12)) moment++;
   }
-  CHECK(nonok == 0 && bad == 0 && bound == 0 && normal == 0 && moment == 0);
-  printf("random sweep, 1e5 steps: %ld not OK, %ld non-finite, %ld over mu F_bound, %ld off the plane, %ld over M_s\n",
-         nonok, bad, bound, normal, moment);
+  CHECK(nonok == 0 && bad == 0 && bound == 0 && normal == 0 && moment == 0 && trusted == 0);
+  printf("random sweep, 1e5 steps: %ld not OK, %ld non-finite, %ld over mu F_bound, %ld off the plane, %ld over M_s, "
+         "%ld where dc_cmd_step_trusted differs\n", nonok, bad, bound, normal, moment, trusted);
 }
 
 /* ns per step, DEM-like (printed, not asserted): partial slip (the

@@ -2,8 +2,14 @@
    inline: dc_classical_tangential_step_law is dc_classical_tangential_step
    with the law an argument, so that a caller that knows the law (a
    LIGGGHTS wrapper dispatching once on its setting) gets the law's path
-   alone, its values in registers. The same code and the same bits as the
-   function (which calls it). */
+   alone, its values in registers; the same code and the same bits as the
+   function (which calls it with checked = 1).
+   checked = 0 skips the check of the inputs' domain (a third of the
+   step's instructions): for a caller whose inputs lie in it by
+   construction (finite, |n| = 1, a, F_bound, meff, kn, gamman in range,
+   dt > 0). The results are checked all the same: a non-finite one gives
+   DC_ERANGE with h and out untouched, and the caller then calls the
+   checked step for the status of its inputs. */
 #ifndef DC_CLASSICAL_TANGENTIAL_STEP_H
 #define DC_CLASSICAL_TANGENTIAL_STEP_H
 
@@ -212,13 +218,12 @@ static inline void ct_incremental_step(double K0, double lim, const double *du, 
   *kt = *sliding ? 0.0 : K0 * cbrt(u1);
 }
 
-DC_INLINE int dc_classical_tangential_step_law(int law, const dc_classical_tangential *m, const dc_patch *patch,
-                                               const dc_classical_tangential_contact *c, const double n[3],
-                                               const double du[3], const double vt[3], double dt,
-                                               dc_classical_tangential_state *h, dc_classical_tangential_out *out)
+/* The inputs' domain (dc_classical_tangential_step): every input finite
+   (one sum, dc/inline.h), then the ranges. */
+DC_INLINE int dc_classical_tangential_domain(int law, const dc_patch *patch, const dc_classical_tangential_contact *c,
+                                             const double n[3], const double du[3], const double vt[3], double dt,
+                                             const dc_classical_tangential_state *h)
 {
-  /* domain */
-  /* domain: every input finite (one sum, dc/inline.h), then the ranges */
   const double *sp = h->spring;
   double chk = ((dc_nf(patch->a) + dc_nf(patch->F_bound)) + (dc_nf(patch->formed) + dc_nf(c->meff))) +
                ((dc_nf(n[0]) + dc_nf(n[1])) + (dc_nf(n[2]) + dc_nf(vt[0]))) +
@@ -232,6 +237,15 @@ DC_INLINE int dc_classical_tangential_step_law(int law, const dc_classical_tange
   const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
   if (!(fabs(nn - 1.0) <= 1e-6)) return DC_EDOM;
   if (!du && !(dt > 0.0 && dt <= DBL_MAX)) return DC_EDOM;
+  return DC_OK;
+}
+
+DC_INLINE int dc_classical_tangential_step_law(int law, int checked, const dc_classical_tangential *m,
+                                               const dc_patch *patch, const dc_classical_tangential_contact *c,
+                                               const double n[3], const double du[3], const double vt[3], double dt,
+                                               dc_classical_tangential_state *h, dc_classical_tangential_out *out)
+{
+  if (checked && dc_classical_tangential_domain(law, patch, c, n, du, vt, dt, h) != DC_OK) return DC_EDOM;
   double d[3], v[3] = {vt[0], vt[1], vt[2]};
   if (du) {
     d[0] = du[0]; d[1] = du[1]; d[2] = du[2];
