@@ -103,15 +103,15 @@ public:
      stock normal model, whose contacts end when the surfaces part). */
   bool formed() const { return written_ && written_->formed != 0.0; }
 
-  /* The patch of a touching contact; under a stock normal model the circle
-     of radius (R delta)^1/2 with the elastic force kn delta. */
-  __attribute__((always_inline)) inline void read(const SurfacesIntersectData &sidata, dc_patch &p) const
+  /* The patch of a touching contact: the normal model's, read in place
+     (no copy: its fields were just stored one by one, and a copy's wider
+     loads would wait for them); under a stock normal model the circle of
+     radius (R delta)^1/2 with the elastic force kn delta, made in stock. */
+  __attribute__((always_inline)) inline const dc_patch &read(const SurfacesIntersectData &sidata, dc_patch &stock) const
   {
-    if (written_) {
-      p = *written_;
-      return;
-    }
-    dc_patch_circular(stockEffectiveRadius(sidata, superquadric_atoms_), sidata.deltan, sidata.kn * sidata.deltan, &p);
+    if (written_) return *written_;
+    dc_patch_circular(stockEffectiveRadius(sidata, superquadric_atoms_), sidata.deltan, sidata.kn * sidata.deltan, &stock);
+    return stock;
   }
 
 private:

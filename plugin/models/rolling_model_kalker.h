@@ -148,8 +148,8 @@ public:
     if (!handed->acts) return;
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_ROLLING_MODEL;
     const dc_rolling_kin &k = handed->k;
-    dc_patch p;
-    patch.read(sidata, p);
+    dc_patch stock;
+    const dc_patch &p = patch.read(sidata, stock);
     const int t = sidata.itype * (ntypes + 1) + sidata.jtype;
     dc_rolling_out out;
     const int st = dc_rolling_force(&params[t], &materials[t], &p, sidata.en, &k, &out);

@@ -160,8 +160,8 @@ public:
   void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
-    dc_patch p;
-    patch.read(sidata, p);
+    dc_patch stock;
+    const dc_patch &p = patch.read(sidata, stock);
     if (handover.active() && handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
       if (sidata.computeflag && sidata.shearupdate)
         memset(&sidata.contact_history[history_offset], 0, nfields() * sizeof(double));
@@ -183,7 +183,7 @@ public:
     dc_classical_tangential_out out;
     const dc_classical_tangential *m = &models[sidata.itype * (ntypes + 1) + sidata.jtype];
     if (dc_classical_tangential_step_law(LAW, 0, m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out) != DC_OK)
-      fail(sidata, p, vt, dc_classical_tangential_step(m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out));
+      fail(sidata, *m, p, *h);
     const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
     applyTangentialForce(sidata, F, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);
   }
@@ -199,9 +199,16 @@ public:
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-  /* A c_core error: stops the run naming the contact. */
-  __attribute__((noinline)) void fail(const SurfacesIntersectData &sidata, const dc_patch &p, const double *vt, int st)
+  /* A c_core error: the checked step names the cause and the run stops
+     (its own copies of the step's data, so that the hot path's stay in
+     registers). */
+  __attribute__((noinline)) void fail(const SurfacesIntersectData &sidata, const dc_classical_tangential &m,
+                                      const dc_patch &p, dc_classical_tangential_state h)
   {
+    const double vt[3] = {sidata.vtr1, sidata.vtr2, sidata.vtr3};
+    const dc_classical_tangential_contact c = {sidata.meff, sidata.kn, sidata.gamman};
+    dc_classical_tangential_out out;
+    const int st = dc_classical_tangential_step(&m, &p, &c, sidata.en, NULL, vt, update->dt, &h, &out);
     char msg[320];
     snprintf(msg, sizeof msg, "Tangential model classical: contact of atom %d: patch a = %g, friction load %g, "
              "velocity %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.F_bound, vt[0], vt[1], vt[2], dc_status_str(st));

@@ -126,8 +126,8 @@ public:
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     if (handover.active()) {
-      dc_patch p;
-      patch.read(sidata, p);
+      dc_patch stock;
+      const dc_patch &p = patch.read(sidata, stock);
       if (handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
         if (sidata.computeflag && sidata.shearupdate)
           memset(state(sidata), 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
@@ -186,8 +186,8 @@ private:
   {
     const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
     const double dt = update->dt;
-    dc_patch p;
-    patch.read(sidata, p);
+    dc_patch stock;
+    const dc_patch &p = patch.read(sidata, stock);
     const double du[3] = {vtr[0] * dt, vtr[1] * dt, vtr[2] * dt};
     double dphi = 0.0;
     if (twisting) {
