@@ -78,9 +78,13 @@ public:
 #endif
   }
 
-  /* Kinematics of a touching contact; a c_core error stops the run with a
-     message naming the atom and the inputs. */
-  void compute(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, double max_radius_factor, dc_rolling_kin &k)
+  /* Kinematics of a touching contact in k; false (k not computed) where a
+     sphere contact cannot roll faster than v_min (c_core's speed bound of
+     isotropic bodies: a settled or sliding contact needs no kinematics). A
+     c_core error stops the run with a message naming the atom and the
+     inputs. */
+  bool compute(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, double max_radius_factor, double v_min,
+               dc_rolling_kin &k)
   {
     double **x = lmp->atom->x;
     const double *n = d.en;
@@ -135,6 +139,7 @@ public:
       for (int c = 0; c < 3; c++) dw[c] = oi[c] - oj[c];
     }
     const double dv[3] = {wi[0] - wj[0], wi[1] - wj[1], wi[2] - wj[2]};
+    if (!sq && dc_rolling_speed_bound_isotropic(ci.k1, cj.k1, dv, dw) <= v_min) return false;
     const int st = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, R_max, &k);
     if (st != DC_OK) {
       char msg[512];
@@ -145,6 +150,7 @@ public:
                dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
       lmp->error->one(FLERR, msg);
     }
+    return true;
   }
 
 private:
@@ -195,7 +201,7 @@ public:
      model then applies nothing and releases its history). */
   bool rolls(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const dc_patch &p)
   {
-    kinematics_.compute(lmp, d, max_radius_factor_, record_.k);
+    if (!kinematics_.compute(lmp, d, max_radius_factor_, v_min_, record_.k)) return record_.acts = false;
     dc_rolling_params prm;
     prm.mu = 0.0;
     prm.v_min = v_min_;

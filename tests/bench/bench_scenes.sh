@@ -228,7 +228,7 @@ row(lambda h, e, r: "    superquadrics, hertz_elliptic with curvatureTolerance 1
     "(%.4f x without)" % (r, r / h, e / h), "sqh", "sqe", "sqr")
 # the whole-contact table: each sub-model's run against its reference run
 contact = [("hertz_elliptic + tangential history", "seh", "sth", None),
-           ("hertz_elliptic + classical springSliding (stock history's physics)", "sc_springSliding", "sth", 1.03)]
+           ("hertz_elliptic + classical springSliding (stock's physics)", "sc_springSliding", "sth", 1.03)]
 contact += [("hertz_elliptic + classical %s" % k[3:], k, "sth", 1.06) for k in sorted(t) if k.startswith("sc_")
             and k != "sc_springSliding" and not k.startswith("base_")]
 contact += [("stock hertz + cmd_tangential", "st", "sth", None),
@@ -242,13 +242,13 @@ contact += [("stock hertz + cmd_tangential", "st", "sth", None),
 if any(k in t for _, k, _, _ in contact):
     print()
     print("whole-contact cost (2888 spheres jittered 2e-4, 10000 steps, 1 rank, unless named; best of runs)")
-    print("%-66s %9s %9s %8s %8s %7s" % ("configuration / against", "time", "against", "ratio", "instr.", "target"))
+    print("%-72s %9s %9s %8s %8s %7s" % ("configuration / against", "time", "against", "ratio", "instr.", "target"))
     for what, k, ref, target in contact:
         if k not in t or ref not in t:
             continue
         r = float(t[k]) / float(t[ref])
         ri = "%.4f" % (float(t["ins_" + k]) / float(t["ins_" + ref])) if "ins_" + k in t and "ins_" + ref in t else "n/a"
-        print("%-66s %8.3fs %8.3fs %8.4f %8s %7s" % (what + " / " + ref, float(t[k]), float(t[ref]), r, ri,
+        print("%-72s %8.3fs %8.3fs %8.4f %8s %7s" % (what + " / " + ref, float(t[k]), float(t[ref]), r, ri,
                                                      "<= %.2f" % target if target else ""))
     if "ins_sth" in t:
         print("instructions (callgrind, inside Verlet::run): " +

@@ -817,8 +817,46 @@ static void test_params(void)
   CHECK(strstr(buf, "poissonsRatio") != NULL);
 }
 
+/* The rolling-speed bound of isotropic bodies never falls below the
+   kinematics' V (random spheres and sphere-plane contacts, velocities and
+   spins over 300 decades, the rolling and the spinning part of either
+   sign, cancelling or not); zero at rest, +inf beyond the doubles. */
+static void test_speed_bound(void)
+{
+  unsigned long long seed = 0x9E3779B97F4A7C15ull;
+  long below = 0, n_ok = 0;
+  for (int it = 0; it < 200000; it++) {
+    double n[3] = {check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5, check_uniform(&seed) - 0.5};
+    const double ln = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int i = 0; i < 3; i++) n[i] /= ln;
+    const double ki = pow(10.0, -3.0 + 9.0 * check_uniform(&seed));
+    const double kj = it % 3 == 0 ? 0.0 : ki * pow(10.0, -3.0 + 6.0 * check_uniform(&seed));
+    const dc_rolling_curvature ci = {ki, ki, {0.0, 0.0, 0.0}}, cj = {kj, kj, {0.0, 0.0, 0.0}};
+    const double sv = pow(10.0, -150.0 + 300.0 * check_uniform(&seed)), sw = sv * pow(10.0, -3.0 + 6.0 * check_uniform(&seed));
+    double v[3], w[3];
+    for (int i = 0; i < 3; i++) {
+      v[i] = sv * (check_uniform(&seed) - 0.5);
+      w[i] = it % 7 == 0 ? 0.0 : sw * (check_uniform(&seed) - 0.5);
+    }
+    dc_rolling_kin k;
+    if (dc_rolling_kinematics(n, &ci, &cj, v, w, &k) != DC_OK) continue;
+    n_ok++;
+    const double b = dc_rolling_speed_bound_isotropic(ki, kj, v, w);
+    if (!(k.V <= b)) {
+      if (below++ < 5) printf("speed bound: V %.17g above the bound %.17g\n", k.V, b);
+    }
+  }
+  printf("rolling speed bound: %ld contacts, %ld with V above it\n", n_ok, below);
+  CHECK(n_ok > 150000 && below == 0);
+  CHECK(dc_rolling_speed_bound_isotropic(1.0, 0.0, (const double[]){1e308, 1e308, 0.0}, (const double[]){0.0, 0.0, 0.0}) ==
+        HUGE_VAL);
+  CHECK(dc_rolling_speed_bound_isotropic(1.0, 1.0, (const double[]){0.0, 0.0, 0.0}, (const double[]){0.0, 0.0, 0.0}) ==
+        0.0);
+}
+
 int main(void)
 {
+  test_speed_bound();
   test_capped();
   test_acts();
   test_table();

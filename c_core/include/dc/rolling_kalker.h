@@ -116,6 +116,8 @@
 #ifndef DC_ROLLING_KALKER_H
 #define DC_ROLLING_KALKER_H
 
+#include <float.h>
+#include <math.h>
 #include "dc/contract.h"
 #include "dc/mindlin.h"
 
@@ -253,6 +255,23 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
    two acts. Reads p->v_min, patch->formed, patch->a and k->V only; no
    domain check (dc_rolling_force makes them). */
 int dc_rolling_acts(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k);
+
+/* An upper bound of the rolling speed V of two isotropic bodies (spheres,
+   a sphere on a plane: curvatures ki, kj >= 0 with ki + kj > 0) from the
+   relative velocity dv at the contact point and the relative spin dw,
+   without the kinematics: V = |P (dw x n / (ki + kj) + h s)| with
+   |h| <= 1/2 and |s| <= |dv| (the isotropic case of Eqs. 89-91 above), so
+   V <= |dw| / (ki + kj) + |dv| / 2 <= the same with 1-norms, returned with
+   a margin of 1e-9 for rounding (+inf where that is not finite). A
+   bound <= v_min tells a wrapper that dc_rolling_acts is 0 without the
+   kinematics (a settled or sliding contact that does not roll). Inline,
+   unchecked. */
+static inline double dc_rolling_speed_bound_isotropic(double ki, double kj, const double dv[3], const double dw[3])
+{
+  const double w = fabs(dw[0]) + fabs(dw[1]) + fabs(dw[2]), v = fabs(dv[0]) + fabs(dv[1]) + fabs(dv[2]);
+  const double b = (w / (ki + kj) + 0.5 * v) * (1.0 + 1e-9);
+  return b <= DBL_MAX ? b : HUGE_VAL;
+}
 
 #ifdef __cplusplus
 }
