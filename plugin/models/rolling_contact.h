@@ -78,18 +78,30 @@ public:
 #endif
   }
 
-  /* Kinematics of a touching contact in k; false (k not computed) where a
-     sphere contact cannot roll faster than v_min (c_core's speed bound of
-     isotropic bodies: a settled or sliding contact needs no kinematics). A
-     c_core error stops the run with a message naming the atom and the
-     inputs. */
-  bool compute(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, double max_radius_factor, double v_min,
-               dc_rolling_kin &k)
+  /* Whether a sphere contact cannot roll faster than v_min (c_core's
+     speed bound of isotropic bodies, from the relative motion at the
+     contact point alone): a settled or sliding contact needs no
+     kinematics. Inline: every contact and step. */
+  __attribute__((always_inline)) static inline bool sphereStill(const SurfacesIntersectData &d, double v_min)
+  {
+    const double *n = d.en;
+    double ri[3], rj[3], dv[3], dw[3];
+    for (int c = 0; c < 3; c++) {
+      ri[c] = -d.cri * n[c];
+      rj[c] = d.is_wall ? 0.0 : d.crj * n[c];
+    }
+    relativeMotion(d, ri, rj, dv, dw);
+    return dc_rolling_speed_bound_isotropic(1.0 / d.radi, d.is_wall ? 0.0 : 1.0 / d.radj, dv, dw) <= v_min;
+  }
+
+  /* Kinematics of a touching contact in k; a c_core error stops the run
+     with a message naming the atom and the inputs. */
+  void compute(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, double max_radius_factor, dc_rolling_kin &k)
   {
     double **x = lmp->atom->x;
     const double *n = d.en;
     dc_rolling_curvature ci, cj;
-    double wi[3], wj[3], ri[3], rj[3];
+    double ri[3], rj[3];
     double R_max = INFINITY;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     const bool sq = d.is_non_spherical && superquadric_atoms_;
@@ -120,12 +132,35 @@ public:
         rj[c] = d.is_wall ? 0.0 : d.crj * n[c];
       }
     }
-    /* material velocities at the contact point: w = v + omega x r */
+    double dv[3], dw[3];
+    relativeMotion(d, ri, rj, dv, dw);
+    const int st = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, R_max, &k);
+    if (st != DC_OK) {
+      char msg[512];
+      snprintf(msg, sizeof msg, "Rolling model kalker: contact of atom %d with %s %d: rolling kinematics: %s "
+               "(curvatures %g, %g and %g, %g 1/m, relative velocity %g %g %g m/s, relative spin %g %g %g 1/s)",
+               (int)lmp->atom->tag[d.i], d.is_wall ? "wall type" : "atom",
+               d.is_wall ? d.jtype : (int)lmp->atom->tag[d.j], dc_status_str(st), ci.k1, ci.k2, cj.k1, cj.k2,
+               dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
+      lmp->error->one(FLERR, msg);
+    }
+  }
+
+  bool superquadricAtoms() const { return superquadric_atoms_; }
+
+private:
+  /* The relative velocity dv of the material points at the contact point
+     (w = v + omega x r, lever arms ri, rj from the centres) and the
+     relative spin dw; a wall moves with LIGGGHTS' wall velocity and does
+     not turn. */
+  __attribute__((always_inline)) static inline void relativeMotion(const SurfacesIntersectData &d, const double *ri,
+                                                                   const double *rj, double *dv, double *dw)
+  {
+    double wi[3], wj[3];
     const double *oi = d.omega_i;
     wi[0] = d.v_i[0] + oi[1] * ri[2] - oi[2] * ri[1];
     wi[1] = d.v_i[1] + oi[2] * ri[0] - oi[0] * ri[2];
     wi[2] = d.v_i[2] + oi[0] * ri[1] - oi[1] * ri[0];
-    double dw[3];
     if (d.is_wall) {
       for (int c = 0; c < 3; c++) {
         wj[c] = d.v_j[c];
@@ -138,22 +173,9 @@ public:
       wj[2] = d.v_j[2] + oj[0] * rj[1] - oj[1] * rj[0];
       for (int c = 0; c < 3; c++) dw[c] = oi[c] - oj[c];
     }
-    const double dv[3] = {wi[0] - wj[0], wi[1] - wj[1], wi[2] - wj[2]};
-    if (!sq && dc_rolling_speed_bound_isotropic(ci.k1, cj.k1, dv, dw) <= v_min) return false;
-    const int st = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, R_max, &k);
-    if (st != DC_OK) {
-      char msg[512];
-      snprintf(msg, sizeof msg, "Rolling model kalker: contact of atom %d with %s %d: rolling kinematics: %s "
-               "(curvatures %g, %g and %g, %g 1/m, relative velocity %g %g %g m/s, relative spin %g %g %g 1/s)",
-               (int)lmp->atom->tag[d.i], d.is_wall ? "wall type" : "atom",
-               d.is_wall ? d.jtype : (int)lmp->atom->tag[d.j], dc_status_str(st), ci.k1, ci.k2, cj.k1, cj.k2,
-               dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
-      lmp->error->one(FLERR, msg);
-    }
-    return true;
+    for (int c = 0; c < 3; c++) dv[c] = wi[c] - wj[c];
   }
 
-private:
   bool superquadric_atoms_;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricCurvature curvature_;
@@ -201,7 +223,13 @@ public:
      model then applies nothing and releases its history). */
   bool rolls(LAMMPS_NS::LAMMPS *lmp, const SurfacesIntersectData &d, const dc_patch &p)
   {
-    if (!kinematics_.compute(lmp, d, max_radius_factor_, v_min_, record_.k)) return record_.acts = false;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    const bool sphere = !(d.is_non_spherical && kinematics_.superquadricAtoms());
+#else
+    const bool sphere = true;
+#endif
+    if (sphere && RollingKinematics::sphereStill(d, v_min_)) return record_.acts = false;
+    kinematics_.compute(lmp, d, max_radius_factor_, record_.k);
     dc_rolling_params prm;
     prm.mu = 0.0;
     prm.v_min = v_min_;
