@@ -42,7 +42,8 @@
                                  deviation at exit
      contactPatch on|off         store the contact patch in history values, for
                                  compute pair/gran/local ... history (default off;
-                                 on by itself when a sub-model reads the patch) */
+                                 a sub-model that reads the patch gets it in
+                                 memory either way) */
 #ifndef DC_PLUGIN_DC_MODEL_BASE_H
 #define DC_PLUGIN_DC_MODEL_BASE_H
 
