@@ -82,7 +82,7 @@ public:
                 int unsupported = 0) :
     NormalModelBase(lmp, hsetup, c),
     Yeff(NULL), Geff(NULL), tangential_damping(true), limitForce(false), viscoelastic(false), contactPatch(false),
-    dampingLaw(DC_DAMPING_RESTITUTION), invNktv2p(1.0 / force->nktv2p), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
+    dampingSetting(DC_DAMPING_RESTITUTION), dampingLaw(DC_DAMPING_RESTITUTION), invNktv2p(1.0 / force->nktv2p), ntypes_(0), maxRadiusFactor(100.0), curvatureTolerance(0.0),
     curvatureCheck(0.0), name_(name), unsupported_(unsupported), rank_(0), checkMax_(0.0), checked_(0), refreshed_(0),
     over_()
   {}
@@ -95,7 +95,7 @@ public:
     static const char *const names[] = {"restitution", "viscoelastic", "kuwabaraKono", "tsuji", "none"};
     static const int laws[] = {DC_DAMPING_RESTITUTION, DC_DAMPING_VISCOELASTIC, DC_DAMPING_KUWABARA_KONO,
                                DC_DAMPING_TSUJI, DC_DAMPING_NONE};
-    settings.registerChoice("damping", dampingLaw, names, laws, 5, "restitution");
+    settings.registerChoice("damping", dampingSetting, names, laws, 5, "restitution");
     settings.registerOnOff("contactPatch", contactPatch, false);
     settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
     settings.registerDoubleSetting("curvatureTolerance", curvatureTolerance, 0.0);
@@ -130,20 +130,34 @@ public:
     patch.setup(lmp, hsetup, c, contactPatch, name_);
   }
 
-  /* E*, G* and the damping law's property, as a coefficient per type pair
-     (dc_damping_gamma's coef). */
+  /* At each run's start: the deck's damping law, E*, G* and the law's
+     property (connectProperties). */
   void connectToProperties(PropertyRegistry &registry)
+  {
+    dampingLaw = deckDamping();
+    connectProperties(registry);
+  }
+
+  /* The damping law the deck's settings give ('viscoelastic on' is
+     'damping viscoelastic'). The settings are read once, and each run's
+     set-up starts again from them. */
+  int deckDamping()
+  {
+    if (!viscoelastic) return dampingSetting;
+    if (dampingSetting != DC_DAMPING_RESTITUTION && dampingSetting != DC_DAMPING_VISCOELASTIC)
+      stop(true, "'viscoelastic on' and another damping law: give one 'damping LAW'");
+    return DC_DAMPING_VISCOELASTIC;
+  }
+
+  /* E*, G* and the property of the damping law in force (dampingLaw), as a
+     coefficient per type pair (dc_damping_gamma's coef). */
+  void connectProperties(PropertyRegistry &registry)
   {
     const std::string caller = std::string("model ") + name_;
     registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff, caller.c_str());
     registry.registerProperty("Geff", &MODEL_PARAMS::createGeff, caller.c_str());
     registry.connect("Yeff", Yeff, caller.c_str());
     registry.connect("Geff", Geff, caller.c_str());
-    if (viscoelastic) {
-      if (dampingLaw != DC_DAMPING_RESTITUTION && dampingLaw != DC_DAMPING_VISCOELASTIC)
-        stop(true, "'viscoelastic on' and another damping law: give one 'damping LAW'");
-      dampingLaw = DC_DAMPING_VISCOELASTIC;
-    }
     const int n = registry.max_type();
     dampCoef.assign((n + 1) * (n + 1), 0.0);
     double **coef = NULL;
@@ -436,7 +450,8 @@ protected:
 
   double **Yeff, **Geff;
   bool tangential_damping, limitForce, viscoelastic, contactPatch;
-  int dampingLaw;                  /* dc_damping_law */
+  int dampingSetting;              /* the deck's 'damping' (dc_damping_law) */
+  int dampingLaw;                  /* the law in force this run (dc_damping_law) */
   std::vector<double> dampCoef;    /* its coefficient per type pair */
   double invNktv2p;                /* 1/force->nktv2p: 1 in the granular unit styles (si, cgs,
                                       micro, nano), so P/nktv2p to the bit */

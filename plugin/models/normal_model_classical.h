@@ -82,15 +82,14 @@ public:
   {
     const char *caller = "model classical";
     const bool hertz = law == DC_CLASSICAL_HERTZ;
-    if (!hertz && (viscoelastic || dampingLaw != DC_DAMPING_RESTITUTION))
+    if (!hertz && (viscoelastic || dampingSetting != DC_DAMPING_RESTITUTION))
       stop(true, "'damping' and 'viscoelastic' apply to classicalNormal hertz: lsd takes its dashpot from "
                  "coefficientRestitution, hlsConstant and hlsVariable dissipate by their hysteresis");
     if (law == DC_CLASSICAL_HLS_VARIABLE && stiffness == DC_CLASSICAL_K_DURATION)
       stop(true, "classicalStiffness duration is not available with classicalNormal hlsVariable (its collision "
                  "duration depends on the speed): use given, overlap or energy");
-    if (hertz && viscoelastic) dampingLaw = DC_DAMPING_VISCOELASTIC;
-    if (!hertz) dampingLaw = DC_DAMPING_NONE;   /* the base connects no damping property */
-    DcNormalModel::connectToProperties(registry);   /* E*, G*, the damping law's coefficient (dampCoef) */
+    dampingLaw = hertz ? deckDamping() : DC_DAMPING_NONE;   /* lsd, hls: no damping property */
+    connectProperties(registry);   /* E*, G*, the damping law's coefficient (dampCoef) */
     const bool matched = !hertz && stiffness != DC_CLASSICAL_K_GIVEN;
     const bool uses_e = law == DC_CLASSICAL_LSD || law == DC_CLASSICAL_HLS_CONSTANT ||
                         (hertz && (dampingLaw == DC_DAMPING_RESTITUTION || dampingLaw == DC_DAMPING_TSUJI));
