@@ -34,6 +34,7 @@ COHESION_MODEL(COHESION_GW_ADHESION,gw_adhesion,@DC_MODEL_ID@)
 #include "atom.h"
 #include "cohesion_model_base.h"
 #include "contact_frame.h"
+#include "contact_slot.h"
 #include "dc_properties.h"
 #include "contact_models.h"
 #include "error.h"
@@ -91,11 +92,14 @@ public:
 
   void postSettings(IContactHistorySetup *, ContactModelBase *cmb)
   {
+    if (!ContactSlots::find<void>(cmb, "gw_rough_elliptic"))
+      error->all(FLERR, "Cohesion model gw_adhesion needs the normal model gw_rough with 'gwElliptic on' (the "
+                 "adhesive part adds to that closed form): pair_style gran model gw_rough tangential ... cohesion "
+                 "gw_adhesion gwElliptic on, and the same on wall/gran");
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     curvature.setup(lmp, cmb, maxRadiusFactor, "gw_adhesion", "Cohesion model");
     gap.setup(lmp, cmb);
 #else
-    (void)cmb;
 #endif
   }
 

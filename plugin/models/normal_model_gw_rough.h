@@ -47,6 +47,7 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,@DC_MODEL_ID@)
 #define NORMAL_MODEL_GW_ROUGH_H_
 
 #include <vector>
+#include "contact_slot.h"
 #include "dc_model_base.h"
 #include "dc_properties.h"
 #include "superquadric_gap.h"
@@ -66,11 +67,16 @@ public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
     roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false),
-    sphereLaw(DC_GW_SPHERE_TABULATED), ntypes(0)
+    sphereLaw(DC_GW_SPHERE_TABULATED), ntypes(0), offeredTo(0)
   {
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
 #endif
+  }
+
+  ~NormalModel()
+  {
+    if (offeredTo) ContactSlots::withdraw(offeredTo, "gw_rough_elliptic");
   }
 
   void registerSettings(Settings &settings)
@@ -95,6 +101,11 @@ public:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.setup(lmp, c);
 #endif
+    /* for cohesion gw_adhesion, which adds to the elliptic closed form */
+    if (gwElliptic) {
+      ContactSlots::offer(c, "gw_rough_elliptic", this);
+      offeredTo = c;
+    }
   }
 
   void connectToProperties(PropertyRegistry &registry)
@@ -263,6 +274,7 @@ private:
 
   double **roughness, **mu, **n_asp;
   bool gwElliptic, fengFitted, gwPlastic;
+  const ContactModelBase *offeredTo;   /* the contact model offered "gw_rough_elliptic" */
   Plasticity plasticity;
   int ntypes;
   int sphereLaw;   /* DC_GW_SPHERE_* */

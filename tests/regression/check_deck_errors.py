@@ -12,7 +12,9 @@ sphere centre on a wall, a position that is not a number, youngsModulus <= 0 wit
 soft_particles, a property value that is not a finite number, write_data
 with superquadrics (read back) and with contact history (a warning); a
 contact beyond the range of Hertz theory (a warning); attached rough adhesive
-summits resumed from a restart with too small a contact distance.
+summits resumed from a restart with too small a contact distance;
+cohesion gw_adhesion without the normal model it adds to (gw_rough
+gwElliptic on).
 Usage: check_deck_errors.py WORKDIR"""
 import os
 import sys
@@ -35,6 +37,8 @@ cases = [
     ("contact distance too small for the roughness", "in.sphere_base", dict(ok, model="gw_rough tangential history", props=props("props_rough"), x0="0.00099"), "set neigh_modify contact_distance_factor >="),
     # gw_rough's reach (3 sigma) is within contact distance 1.2, the attached summits' (D + 8 sigma) is not
     ("contact distance too small for attached rough adhesive summits", "in.sphere_base", dict(ok, model="gw_rough tangential history cohesion gw_adhesion", props=props("props_rough_adhesive"), settings="gwElliptic on", x0="0.00099", cdf="1.2"), "Cohesion model gw_adhesion: attached summits pull up to 0.000566569 m apart: set neigh_modify contact_distance_factor >= 1.283"),
+    ("gw_adhesion without gwElliptic on", "in.sphere_base", dict(ok, model="gw_rough tangential history cohesion gw_adhesion", props=props("props_rough_adhesive"), settings=""), "Cohesion model gw_adhesion needs the normal model gw_rough with 'gwElliptic on'"),
+    ("gw_adhesion under hertz_elliptic", "in.sphere_base", dict(ok, model="hertz_elliptic tangential history cohesion gw_adhesion", props=props("props_rough_adhesive"), settings=""), "Cohesion model gw_adhesion needs the normal model gw_rough with 'gwElliptic on'"),
     ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
     ("limitForce on an adhesive model", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="limitForce on"), "Normal model jkr_elliptic: 'limitForce on' is not available"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),
