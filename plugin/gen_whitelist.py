@@ -5,16 +5,20 @@ of inputs/, examples/ and tests/bench/, with a ${variable} after a model
 keyword (model, tangential, ...) taken as each model of that kind the deck,
 its check script (tests/regression/check_<case>.py) or the benchmark script
 names, and after cohesion or rolling_friction also off (decks switch those
-sub-models on and off by a variable). Run by plugin/CMakeLists.txt at
-configure time.
-A deck line naming an unknown model is an error (exit 2).
-Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT"""
+sub-models on and off by a variable); and, as LIGGGHTS' own build does,
+the lines of LIGGGHTS' example decks (examples/LIGGGHTS beside its src/,
+skipping lines with a model from a variable or from a package this build
+lacks) and of the user's decks (DECK arguments, from DC_DECKS at set-up).
+Run by plugin/CMakeLists.txt at configure time.
+A project or user deck line naming an unknown model is an error (exit 2).
+Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT [DECK ...]"""
 import glob
 import os
 import re
 import sys
 
 ROOT, LIGG_SRC, OUTPUT = sys.argv[1:4]
+USER_DECKS = sys.argv[4:]
 KINDS = {"model": "NORMAL", "tangential": "TANGENTIAL", "cohesion": "COHESION", "rolling_friction": "ROLLING",
          "surface": "SURFACE"}
 # keyword -> enum name of every model LIGGGHTS and the plugin define
@@ -27,8 +31,9 @@ if ("NORMAL", "hertz_elliptic") not in enums or ("TANGENTIAL", "history") not in
     sys.exit("gen_whitelist: no model headers found in %s and plugin/models" % LIGG_SRC)
 
 
-def combination(words, where):
-    """The GRAN_MODEL arguments of a pair_style gran / wall/gran argument list."""
+def combination(words, where, strict=True):
+    """The GRAN_MODEL arguments of a pair_style gran / wall/gran argument
+    list; None for an unknown model where not strict."""
     got = {"NORMAL": "NORMAL_OFF", "TANGENTIAL": "TANGENTIAL_OFF", "COHESION": "COHESION_OFF",
            "ROLLING": "ROLLING_OFF", "SURFACE": "SURFACE_DEFAULT"}
     for k, word in enumerate(words[:-1]):
@@ -38,6 +43,8 @@ def combination(words, where):
                 got[kind] = kind + "_OFF"
                 continue
             if (kind, words[k + 1]) not in enums:
+                if not strict:
+                    return None
                 sys.stderr.write("gen_whitelist: %s: unknown %s model '%s'\n" % (where, word, words[k + 1]))
                 sys.exit(2)
             got[kind] = enums[(kind, words[k + 1])]
@@ -76,6 +83,30 @@ for deck in sorted(decks):
             combo = combination(v, os.path.relpath(deck, ROOT))
             if combo not in used:
                 used.append(combo)
+
+
+def model_lines(text):
+    """The argument lists of a deck's pair_style gran and wall/gran lines."""
+    for line in text.replace("&\n", " ").split("\n"):
+        words = line.split("#")[0].replace('"', " ").split()
+        if words and (words[0] == "pair_style" and "gran" in words[:2] or "wall/gran" in words) and "model" in words:
+            yield words
+
+
+# LIGGGHTS' examples and the user's decks: the models they write out
+others = [(p, False) for p in sorted(glob.glob(os.path.join(LIGG_SRC, "..", "examples", "LIGGGHTS", "**", "in.*"),
+                                           recursive=True))]
+others += [(p, True) for p in USER_DECKS]
+for deck, user in others:
+    for words in model_lines(open(deck, errors="replace").read()):
+        if any(w.startswith("${") or w.startswith("$") for w in words):
+            if user:
+                sys.stderr.write("gen_whitelist: %s: a model from a variable is not compiled (%s): write the "
+                                 "models out on the line\n" % (deck, " ".join(words)))
+            continue
+        combo = combination(words, deck, strict=user)
+        if combo and combo not in used:
+            used.append(combo)
 text = "".join("GRAN_MODEL(%s)\n" % ", ".join(c) for c in sorted(used))
 if not os.path.exists(OUTPUT) or open(OUTPUT).read() != text:
     with open(OUTPUT, "w") as f:

@@ -26,10 +26,19 @@ fi
 "$root/plugin/fetch_liggghts.sh" "$root/.deps/liggghts-3.8.0"
 
 mkdir -p "$root/build"
+# DC_DECKS: the user's decks (space-separated paths) whose contact-model
+# combinations are compiled too (kept for later builds)
+user_decks=()
+for d in ${DC_DECKS:-}; do
+  [ -f "$d" ] || { echo "setup: DC_DECKS: no deck $d" >&2; exit 1; }
+  user_decks+=("$(cd "$(dirname "$d")" && pwd)/$(basename "$d")")
+done
+decks_arg=()
+[ -n "${DC_DECKS:-}" ] && decks_arg=("-DDC_USER_DECKS=$(IFS=';'; echo "${user_decks[*]}")")
 export CCACHE_BASEDIR="$root"
 export CCACHE_MAXSIZE=${CCACHE_MAXSIZE:-4G}
 cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release -DDC_WITH_LIGGGHTS=ON \
-      -DLIGGGHTS_SOURCE_DIR="$root/.deps/liggghts-3.8.0" \
+      -DLIGGGHTS_SOURCE_DIR="$root/.deps/liggghts-3.8.0" "${decks_arg[@]}" \
       -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >"$root/build/configure.log" 2>&1 \
   || { cat "$root/build/configure.log"; exit 1; }
 echo "setup: building (first build of LIGGGHTS takes several minutes on 2 cores; log in build/build.log)"
