@@ -591,9 +591,30 @@ static void zero_out(dc_rolling_out *out)
 
 /* Creep force and spin moment: Eqs. 86-88 (c powers corrected), saturated
    by Eqs. 92-93 (Vermeulen-Johnson) or capped (linear). */
-int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
-                     const dc_patch *patch, const double n[3], const dc_rolling_kin *k,
-                     dc_rolling_out *out)
+double dc_rolling_step_factor(double x)
+{
+  if (!(x > 0.0)) return 1.0;
+  if (x > 1e75) return 1.0 / x;   /* x^4 overflows: (1 + x^4)^-1/4 = 1/x to rounding */
+  const double x2 = x * x;
+  return 1.0 / sqrt(sqrt(1.0 + x2 * x2));
+}
+
+/* The step ratio x of dc_rolling_step_factor: dt times the largest
+   relaxation rate of the linear law, the spectral radius of
+   (G c^2 / V) M^-1 A on (s_x; s_y, c omega_n) (see the header): c11 inv_m
+   for s_x, and for the coupled pair the 2x2 block
+   [[c22 inv_m, c23 inv_m], [-c23 c^2 inv_I, c33 c^2 inv_I]]. */
+static double step_ratio(const dc_rolling_step *s, double G, double cc, double V, const dc_kalker_coef *c)
+{
+  const double t = s->dt * G * cc * cc / V, cI = cc * cc * s->inv_I;
+  const double a = c->c22 * s->inv_m, d = c->c33 * cI, be = c->c23 * c->c23 * s->inv_m * cI;
+  const double h = 0.5 * (a + d), q = 0.25 * (a - d) * (a - d) - be;
+  const double rho = q >= 0.0 ? h + sqrt(q) : sqrt(a * d + be);
+  return t * fmax(c->c11 * s->inv_m, rho);
+}
+
+static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm, const dc_patch *patch,
+                         const double n[3], const dc_rolling_kin *k, const dc_rolling_step *step, dc_rolling_out *out)
 {
   if (!(isfinite(p->mu) && p->mu >= 0.0 && isfinite(p->v_min) && p->v_min > 0.0)) return DC_EDOM;
   if (p->model != DC_ROLLING_KALKER && p->model != DC_ROLLING_VJ) return DC_EDOM;
@@ -645,6 +666,14 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
   if (!isfinite(Mz) && isfinite(mz)) Mz = dc_scaled_product(5, (const double[]){rm->G, cc, cc, cc, mz});
   const double muF = p->mu * patch->F_bound;
   if (!isfinite(muF) || !isfinite(xi_x) || !isfinite(xi_y) || !isfinite(phi)) return DC_ERANGE;
+  /* the explicit step's stability: the linear law scaled by (1 + x^4)^-1/4 */
+  double fac_step = 1.0;
+  if (step) {
+    fac_step = dc_rolling_step_factor(step_ratio(step, rm->G, cc, V, &c));
+    Fx *= fac_step;
+    Fy *= fac_step;
+    Mz *= fac_step;
+  }
   double FL = sqrt(Fx * Fx + Fy * Fy);
   if (!(FL > 1e-150 && FL < 1e150)) FL = hypot(Fx, Fy);   /* squares under- or overflow */
   double ux = 0.0, uy = 0.0;   /* direction of the linear force */
@@ -716,6 +745,23 @@ int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
     const double sat = muF > 0.0 ? h / muF : 0.0;
     out->saturation = sat > 1.0 ? 1.0 : sat;
   }
+  out->step_factor = fac_step;
   out->rolling = 1;
   return DC_OK;
+}
+
+int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
+                     const dc_patch *patch, const double n[3], const dc_rolling_kin *k,
+                     dc_rolling_out *out)
+{
+  return rolling_force(p, rm, patch, n, k, NULL, out);
+}
+
+int dc_rolling_force_step(const dc_rolling_params *p, const dc_rolling_material *rm, const dc_patch *patch,
+                          const double n[3], const dc_rolling_kin *k, const dc_rolling_step *step, dc_rolling_out *out)
+{
+  if (!(isfinite(step->dt) && step->dt >= 0.0 && isfinite(step->inv_m) && step->inv_m >= 0.0 &&
+        isfinite(step->inv_I) && step->inv_I >= 0.0))
+    return DC_EDOM;
+  return rolling_force(p, rm, patch, n, k, step, out);
 }

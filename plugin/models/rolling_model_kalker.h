@@ -41,6 +41,7 @@ ROLLING_MODEL(ROLLING_KALKER,kalker,@DC_MODEL_ID@)
 #ifndef ROLLING_MODEL_KALKER_H_
 #define ROLLING_MODEL_KALKER_H_
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -52,6 +53,7 @@ ROLLING_MODEL(ROLLING_KALKER,kalker,@DC_MODEL_ID@)
 #include "global_properties.h"
 #include "rolling_contact.h"
 #include "rolling_model_base.h"
+#include "update.h"
 #include "dc/contract.h"
 #include "dc/mindlin.h"
 #include "dc/rolling_kalker.h"
@@ -151,8 +153,10 @@ public:
     dc_patch stock;
     const dc_patch &p = patch.read(sidata, stock);
     const int t = sidata.itype * (ntypes + 1) + sidata.jtype;
+    dc_rolling_step step;
+    stepOf(sidata, step);
     dc_rolling_out out;
-    const int st = dc_rolling_force(&params[t], &materials[t], &p, sidata.en, &k, &out);
+    const int st = dc_rolling_force_step(&params[t], &materials[t], &p, sidata.en, &k, &step, &out);
     if (st != DC_OK) {
       char msg[512];
       snprintf(msg, sizeof msg, "Rolling model kalker: contact of atom %d: patch a = %g, b = %g, friction load %g, "
@@ -177,6 +181,36 @@ public:
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
+  /* The time step and the bodies' inverse masses for the stable step
+     (dc_rolling_step): lever arms to the contact point as the kinematics
+     take them; a superquadric's smallest principal moment of inertia. */
+  void stepOf(const SurfacesIntersectData &d, dc_rolling_step &s) const
+  {
+    s.dt = update->dt;
+    s.inv_m = s.inv_I = 0.0;
+    addBody(d, d.i, d.cri, s);
+    if (!d.is_wall) addBody(d, d.j, d.crj, s);
+  }
+
+  void addBody(const SurfacesIntersectData &d, int i, double lever, dc_rolling_step &s) const
+  {
+    const double m = atom->rmass[i];
+    double I = 0.4 * m * atom->radius[i] * atom->radius[i];
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+    if (d.is_non_spherical && atom->superquadric_flag) {
+      const double *J = atom->inertia[i];
+      I = std::min(J[0], std::min(J[1], J[2]));
+      double r2 = 0.0;
+      for (int c = 0; c < 3; c++) r2 += (d.contact_point[c] - atom->x[i][c]) * (d.contact_point[c] - atom->x[i][c]);
+      lever = std::sqrt(r2);
+    }
+#else
+    (void)d;
+#endif
+    s.inv_m += 1.0 / m + lever * lever / I;
+    s.inv_I += 1.0 / I;
+  }
+
   int creepModel;
   double vMin, maxRadiusFactor;
   const RollingRecord *handed;   /* the tangential model's hand-over record (rolling_contact.h) */

@@ -26,9 +26,11 @@ contact point):
   integrated): it slides at mu m g (the saturated creep force), the slip
   ends at the time of Coulomb friction, and it rolls on at
   v0 / (1 + I / (m c^2)) with no force (no rolling resistance); without the
-  rolling model (cmd_tangential alone) the same speed; the explicit time
-  step limit of the creep force, dt < 2 m_eff V / (G c^2 c11), holds: below
-  it the force settles, above it chatters.
+  rolling model (cmd_tangential alone) the same speed; beyond the plain
+  law's explicit step limit, dt < 2 m_eff V / (G c^2 c11) (1.5 times, and
+  slower rolling at 3.5, 10 and 100 times) the stepped law settles without
+  chatter; at a 25th of it the creep force equals the independent law
+  within 1e-3 at every unsaturated step.
 Prints the creep force against the longitudinal creepage.
 Usage: check_rolling_creep.py WORKDIR [--update]"""
 import math
@@ -228,9 +230,10 @@ m = 2500 * 4 / 3 * math.pi * R ** 3
 I = 0.4 * m * R * R
 
 
-def release(name, rmodel, dt, steps):
+def release(name, rmodel, dt, steps, every=10, v0=V0, rset="contactPatch off"):
     d = os.path.join(work, "release_" + name)
-    run("rolling_creep/in.rolling_release", d, variables={"rmodel": rmodel, "dt": dt, "steps": steps}, tag="run")
+    run("rolling_creep/in.rolling_release", d, variables={"rmodel": rmodel, "dt": dt, "steps": steps,
+        "every": every, "v0": v0, "rset": rset}, tag="run")
     return table(os.path.join(d, "release.txt"))
 
 
@@ -252,18 +255,65 @@ c.true(abs(last[1] - last[2] * cl) <= 1e-9 * V0 and abs(last[3]) <= 1e-9 * MU * 
 off = release("off", "off", 1e-6, 12000)
 c.rel(off[-1][1], v_f, 1e-3, "release without the rolling model (cmd_tangential alone): the same final speed, "
       "within its undamped spring's oscillation")
-# Explicit time step of the creep force near zero creepage: F = -(G c^2 c11 / V) s
-# is a viscous force on the slip, stable while dt < 2 m_eff V / (G c^2 c11),
-# m_eff = 1 / (1/m + c^2/I); beyond, the force flips every step (bounded by mu F_n)
+# The creep force near zero creepage, F = -(G c^2 c11 / V) s, is a viscous
+# force on the slip: an explicit step of the plain law flips it every step
+# beyond dt = 2 m_eff V / (G c^2 c11), m_eff = 1 / (1/m + c^2/I). The
+# stepped law (dc_rolling_force_step: the linear law times
+# (1 + x^4)^-1/4, x = dt G c^2 c11 / (V m_eff)) settles at any step.
 delta = R - last[5]
 c11 = law.coefficients(TABLE, 1.0)[0]
-dt_s = 2 * v_f / (G * R * delta * c11 * (1 / m + cl * cl / I))
-for f, stable in ((0.8, True), (1.5, False)):
+inv_m = 1 / m + cl * cl / I
+dt_s = 2 * v_f / (G * R * delta * c11 * inv_m)
+
+
+def chatter(rows):
+    """Samples (every step) where F_x changed sign in two steps running."""
+    fx = [r[3] for r in rows]
+    return sum(1 for i in range(2, len(fx)) if fx[i] * fx[i - 1] < 0 and fx[i - 1] * fx[i - 2] < 0)
+
+
+for f in (0.8, 1.5):
     dt = f * dt_s
-    r2 = release("dt%.1f" % f, "kalker", dt, int(0.012 / dt))
+    r2 = release("dt%.1f" % f, "kalker", dt, int(0.012 / dt), every=1)
     tail = max(abs(r[3]) for r in r2[-20:]) / (MU * m * GRAV)
-    c.true((tail <= 1e-6) == stable, "release at dt = %.1f x %.3g s (the creep force's stability limit): %s "
-           "(|F_x| / mu m g at the end %.2g)" % (f, dt_s, "settles" if stable else "chatters", tail))
+    c.true(tail <= 1e-6 and chatter(r2) == 0, "release at dt = %.1f x %.3g s (the plain law's stability limit): "
+           "settles, %d chatter steps (|F_x| / mu m g at the end %.2g)" % (f, dt_s, chatter(r2), tail))
+# Slower rolling at dt = 1e-6: v0 = 3 mm/s (rolling on at 2.1 mm/s, 3.5 times
+# beyond the plain law's limit: it chattered at +-mu m g at every step),
+# and speeds 10 and 100 times beyond; rollingVelocityMin 1e-5 m/s
+for name, beyond in (("v0 3 mm/s", None), ("10 x the limit", 10.0), ("100 x the limit", 100.0)):
+    v0 = 0.003 if beyond is None else V0 * (1e-6 / beyond) / dt_s
+    vf = v0 / (1 + I / (m * cl * cl))
+    r2 = release("slow%d" % (0 if beyond is None else beyond), "kalker", 1e-6, 20000, every=1, v0=v0,
+                 rset="rollingVelocityMin 1e-5")
+    rolling = r2[len(r2) // 4:]
+    tail = max(abs(r[3]) for r in r2[-1000:]) / (MU * m * GRAV)
+    c.true(chatter(rolling) == 0 and tail <= 1e-9 and abs(r2[-1][1] / vf - 1) <= 1e-6,
+           "release, %s (v0 %.3g m/s, dt 1e-6 s = %.1f x the plain law's limit at the final speed): %d chatter steps "
+           "in the last %d, |F_x| / mu m g at the end %.2g, final speed %.9g of v0 / (1 + I / (m c^2))"
+           % (name, v0, 1e-6 / (dt_s * vf / v_f), chatter(rolling), len(rolling), tail, r2[-1][1] / vf))
+# Where dt is below a tenth of the limit the force is Kalker's linear theory
+# (Vermeulen-Johnson here) within 1e-3: every step of the end of sliding at
+# dt = dt_s / 25, against the independent law from the dumped state (the
+# velocities at the half step, at which LIGGGHTS evaluates the force)
+dt = dt_s / 25
+r2 = release("linear", "kalker", dt, int(0.0075 / dt), every=1)
+worst, n_cmp = 0.0, 0
+for r in r2:
+    t, vx, wy, fx, fz, z = r
+    d = R - z
+    if d <= 0:
+        continue
+    vh, wh = vx - 0.5 * dt * fx / m, wy - 0.5 * dt * (-(R - 0.5 * d) * fx) / I
+    a = math.sqrt(R * d)
+    Fb = 4.0 / 3.0 * ESTAR * math.sqrt(R) * d ** 1.5
+    out = law.rolling_law(SPHERE(R), ZERO2, (vh - wh * (R - 0.5 * d), 0.0), (0.0, wh, 0.0), a, a, (1.0, 0.0), Fb, G,
+                          MU, "vermeulenJohnson", TABLE)
+    if not (out["V"] > VMIN) or not (1e-3 <= out["saturation"] <= 0.9):
+        continue
+    worst, n_cmp = max(worst, abs(fx / out["F"][0] - 1)), n_cmp + 1
+c.true(n_cmp >= 10 and worst <= 1e-3, "release at dt = %.3g s (a 25th of the plain law's limit): the creep force of "
+       "%d unsaturated steps equals the independent law within %.2g (tol 1e-3)" % (dt, n_cmp, worst))
 
 print("     creep force against longitudinal creepage (F_x / mu F_n: LIGGGHTS, independent law)")
 for tag, xi, got, want in curves:

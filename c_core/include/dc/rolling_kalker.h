@@ -232,6 +232,7 @@ typedef struct {
   double xi_x, xi_y, phi;       /* creepages [-], [-], spin creepage [1/m] */
   dc_kalker_coef c;             /* coefficients used */
   double saturation;            /* |F| / (mu F_bound), 0..1 (0 when mu F_bound = 0) */
+  double step_factor;           /* dc_rolling_force_step's factor on the linear law (1: dc_rolling_force) */
   int rolling;                  /* 1: the creep force acts; 0: V <= v_min or no contact (zeros) */
 } dc_rolling_out;
 
@@ -247,6 +248,44 @@ typedef struct {
 int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
                      const dc_patch *patch, const double n[3], const dc_rolling_kin *k,
                      dc_rolling_out *out);
+
+/* What the explicit time step of a DEM code needs to know of the two
+   bodies: the step dt [s], the slip's inverse effective mass
+   inv_m = sum over the bodies of 1/m + r^2/I [1/kg] (r the lever arm to
+   the contact point, I the moment of inertia about an axis in the contact
+   plane; a sphere on a plane: 7/(2m)) and the spin's inverse inertia
+   inv_I = sum of 1/I about the normal [1/(kg m^2)]; a wall adds nothing. */
+typedef struct {
+  double dt, inv_m, inv_I;
+} dc_rolling_step;
+
+/* Stable at any time step. Near zero creepage the law is a viscous force
+   on the slip, F = -(G c^2 c11 / V) s (and the like for the lateral slip
+   and the spin), so a DEM code's explicit step, which applies this step's
+   F over the next, multiplies the slip by 1 - x per step, x = dt G c^2
+   c11 / (V m_eff): it flips the force's sign every step beyond x = 1
+   (chatter) and grows beyond x = 2. The force of this function is the
+   linear law times dc_rolling_step_factor(x) = (1 + x^4)^-1/4, before
+   saturation, with x the largest step ratio of the coupled law: dt G c^2
+   / V times the spectral radius of M^-1 A on (s_x; s_y, c omega_n), i.e.
+   the larger of c11 inv_m and that of the block [[c22 inv_m, c23 inv_m],
+   [-c23 c^2 inv_I, c33 c^2 inv_I]] (lateral slip and spin, coupled by
+   c23). Then x (1 + x^4)^-1/4 < 1 at every x: a real mode shrinks each
+   step without changing sign, at large x towards the force that stops it
+   in one step, m_eff |s| / dt; a complex pair (c23^2 c^2 inv_I large
+   against ((c22 inv_m - c33 c^2 inv_I)/2)^2 / inv_m) still shrinks, its
+   real part being at least sqrt(c22 c33 / (c22 c33 + c23^2)) of its
+   modulus. At x <= 0.2 (dt below a tenth of the explicit limit) the force
+   is the linear law within x^4 / 4 <= 4e-4. A steady rolling contact
+   (x small) gets Kalker's law.
+   step: dt >= 0, inv_m >= 0, inv_I >= 0, finite (else DC_EDOM); otherwise
+   as dc_rolling_force; out->step_factor holds the factor. */
+int dc_rolling_force_step(const dc_rolling_params *p, const dc_rolling_material *rm, const dc_patch *patch,
+                          const double n[3], const dc_rolling_kin *k, const dc_rolling_step *step,
+                          dc_rolling_out *out);
+
+/* (1 + x^4)^-1/4 for x > 0, 1 for x <= 0 or NaN; 1/x where x^4 overflows. */
+double dc_rolling_step_factor(double x);
 
 /* The hand-over rule (zero rolling speed, above): 1 when dc_rolling_force
    acts on this contact (rolling = 1: patch formed, a > 0, V > v_min), 0
