@@ -44,7 +44,7 @@ class NormalModel<JAMARI_EP> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    DcNormalModel(lmp, hsetup, c, "jamari_ep"), history_offset(-1), ntypes(0)
+    DcNormalModel(lmp, hsetup, c, "jamari_ep"), history_offset(-1), ntypes(0), contactModel(c)
   {
     for (int k = 0; k < DC_JAMARI_HISTORY_NFIELDS; k++) {
       const int off = hsetup->add_history_value(dc_jamari_history[k].name, dc_jamari_history[k].flips ? "1" : "0");
@@ -67,6 +67,7 @@ public:
     for (int i = 1; i <= ntypes; i++)
       for (int j = 1; j <= ntypes; j++)
         yield_ratio[i * (ntypes + 1) + j] = dc_jamari_circle_yield_ratio(Yeff[i][j], &params[i * (ntypes + 1) + j]);
+    checkCohesion(registry);
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
@@ -127,8 +128,34 @@ public:
   }
 
 private:
+  /* Under LIGGGHTS' sjkr or sjkr2 the cohesive pressure cohesionEnergyDensity
+     acts on the overlap's truncation area, the area on which the plastic
+     contact carries at most plasticityCh x hardness: at or above that
+     pressure nothing holds the surfaces apart and they sink into each
+     other, turning the cohesion's energy into motion. Stops the run then,
+     naming the type pair and both values. */
+  void checkCohesion(PropertyRegistry &registry)
+  {
+    const int cohesion = static_cast<int>((contactModel->style_hash() >> 12) & 63);
+    if (cohesion != COHESION_SJKR && cohesion != COHESION_SJKR2) return;
+    registry.registerProperty("cohEnergyDens", &MODEL_PARAMS::createCohesionEnergyDensity);
+    double **ced = registry.getMatrixProperty("cohEnergyDens", "model jamari_ep")->data;
+    for (int i = 1; i <= ntypes; i++)
+      for (int j = 1; j <= ntypes; j++) {
+        const dc_jamari_params &p = params[i * (ntypes + 1) + j];
+        if (ced[i][j] < p.c_h * p.H) continue;
+        char msg[512];
+        snprintf(msg, sizeof msg, "cohesionEnergyDensity = %g Pa for types %d and %d is not below the largest "
+                 "contact pressure of the plastic contact, plasticityCh x hardness = %g Pa: cohesion %s would pull "
+                 "the surfaces into each other without bound; lower cohesionEnergyDensity or raise hardness",
+                 ced[i][j], i, j, p.c_h * p.H, cohesion == COHESION_SJKR ? "sjkr" : "sjkr2");
+        stop(true, msg);
+      }
+  }
+
   Plasticity plasticity;
   int history_offset, ntypes;
+  const ContactModelBase *contactModel;
   std::vector<dc_jamari_params> params;
   std::vector<double> yield_ratio;   /* delta_n1 / R of sphere contacts per type pair */
 };
