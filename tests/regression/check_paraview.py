@@ -21,7 +21,10 @@ the dumps, and reads every written file back with VTK's own XML reader
   applied here as q v q*), |f| < 1e-5 (glyph points are single precision);
 - --surfaces: every surface point lies on its particle's surface
   (superquadrics |f| < 1e-9, spheres |r - R| < 1e-12 R);
-- a dump local without --log or --compute is refused with exit code 2.
+- a dump local without --log or --compute is refused with exit code 2;
+- this build's `dump custom/vtk` (plugin/io), legacy .vtk and XML .vtp, on
+  1 and 2 ranks: the same points and arrays as the converter's particle
+  files (without the glyph tensor), bit for bit.
 Usage: check_paraview.py WORKDIR"""
 import json
 import math
@@ -35,12 +38,18 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 
 def vtk_read(paths, glyph):
-    """Runs in an interpreter with VTK: prints the content of each .vtp as
-    JSON; with glyph, also the points of the superquadric tensor glyphs."""
+    """Runs in an interpreter with VTK: prints the content of each .vtp (or
+    legacy .vtk) as JSON; with glyph, also the points of the superquadric
+    tensor glyphs."""
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    from vtkmodules.vtkIOLegacy import vtkPolyDataReader
     out = {}
     for p in paths:
-        r = vtkXMLPolyDataReader()
+        if p.endswith(".vtk"):
+            r = vtkPolyDataReader()
+            r.ReadAllFieldsOn()
+        else:
+            r = vtkXMLPolyDataReader()
         r.SetFileName(p)
         r.Update()
         o = r.GetOutput()
@@ -317,6 +326,25 @@ def check_case(name, deck, ranks, sq):
     c.true(ok_lines, "%s: each line runs from particle i to particle j (the dump's pos)" % name)
     c.true(ok_values, "%s: id1, id2, force, |force|, history and the contact patch (a, b, axis, F, friction load, "
                       "formed) equal to the dump's" % name)
+    # --- this build's dump custom/vtk (the same columns, 1 or 2 ranks): the
+    # converter's particles without the glyph tensor, bit for bit, legacy
+    # (.vtk) and XML (.vtp)
+    for kind, pattern in (("legacy VTK", "legacy%d.vtk"), ("VTK XML", "xml%d.vtp")):
+        mine = [os.path.join(d, "post", pattern % st) for st in steps]
+        got_mine = read_back(mine)
+        got = read_back(files)
+        same = True
+        for f, m in zip(files, mine):
+            want, have = got[f], got_mine[m]
+            if have is None:
+                same = False
+                continue
+            arrays = {k: v[2] for k, v in want["point"].items() if k != "sq_tensor"}
+            same &= have["points"] == want["points"] and have["npoints"] == have["nverts"] == want["npoints"]
+            same &= {k: v[2] for k, v in have["point"].items()} == arrays
+        c.true(same, "%s: dump custom/vtk (%s, %d snapshots, %d rank%s) holds the converter's points and arrays %s, "
+               "bit for bit" % (name, kind, len(mine), ranks, "s" if ranks > 1 else "",
+                                ", ".join(sorted(k for k in want_names if k != "sq_tensor"))))
     if sq:
         axes = [cell["patch_axis"][2][3 * r:3 * r + 3] for r in range(len(rows))]
         c.true(any(abs(a[1]) > 0.1 and abs(a[2]) > 0.1 for a in axes),
