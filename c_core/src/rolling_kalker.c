@@ -138,6 +138,7 @@ int dc_rolling_check(const dc_rolling_params *p, dc_param_error *err)
     err->range = "{0 (Kalker linear), 1 (Vermeulen-Johnson)}";
     return DC_EDOM;
   }
+  if (dc_param_check("rollingDistanceMin", p->roll_min, 0.0, 0, INFINITY, 1, "[0, inf)", err)) return DC_EDOM;
   return DC_OK;
 }
 
@@ -553,6 +554,23 @@ int dc_rolling_acts(const dc_rolling_params *p, const dc_patch *patch, const dc_
 {
   /* the zero branch of dc_rolling_force, negated */
   return !(patch->formed == 0.0 || patch->a == 0.0 || k->V <= p->v_min);
+}
+
+int dc_rolling_acts_rolled(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k, double dt,
+                           double rolled[3])
+{
+  if (!dc_rolling_acts(p, patch, k)) {
+    rolled[0] = rolled[1] = rolled[2] = 0.0;
+    return 0;
+  }
+  const double s = k->V * dt;
+  double r2 = 0.0;
+  for (int c = 0; c < 3; c++) {
+    rolled[c] += s * k->ex[c];
+    r2 += rolled[c] * rolled[c];
+  }
+  const double L = p->roll_min * patch->a;
+  return r2 >= L * L;
 }
 
 /* Unit vector along (x, y1 + y2), whose parts may be infinite (then only

@@ -47,6 +47,7 @@
 #include "settings.h"
 #include "superquadric_curvature.h"
 #include "dc/rolling_kalker.h"
+#include "update.h"
 #include "dc/status.h"
 
 namespace LIGGGHTS {
@@ -55,6 +56,7 @@ namespace ContactModels {
 /* The settings the rolling model and the hand-over share (same names, so
    one deck value reaches both). */
 static const double DC_ROLLING_VMIN_DEFAULT = 1e-3;   /* rollingVelocityMin [m/s] */
+static const double DC_ROLLING_DISTANCE_DEFAULT = 2.0; /* rollingDistanceMin [-]: one patch length */
 
 /* The hand-over record: this evaluation's kinematics and whether the
    rolling model acts. */
@@ -185,7 +187,8 @@ private:
 /* The tangential models' side of the hand-over. */
 class RollingHandover {
 public:
-  RollingHandover() : cmb_(0), offered_(false), v_min_(DC_ROLLING_VMIN_DEFAULT), max_radius_factor_(100.0)
+  RollingHandover() : cmb_(0), offered_(false), rolled_offset_(-1), v_min_(DC_ROLLING_VMIN_DEFAULT),
+    roll_min_(DC_ROLLING_DISTANCE_DEFAULT), max_radius_factor_(100.0)
   {
     memset(&record_, 0, sizeof record_);
   }
@@ -203,16 +206,25 @@ public:
   {
     if (!announced()) return;
     settings.registerDoubleSetting("rollingVelocityMin", v_min_, DC_ROLLING_VMIN_DEFAULT);
+    settings.registerDoubleSetting("rollingDistanceMin", roll_min_, DC_ROLLING_DISTANCE_DEFAULT);
     settings.registerDoubleSetting("maxRadiusFactor", max_radius_factor_, 100.0);
   }
 
-  /* From its postSettings: the record offered to the rolling model. */
-  void setup(LAMMPS_NS::LAMMPS *lmp)
+  /* From its postSettings: the record offered to the rolling model, and
+     the contact's net rolled distance (3 history values) when the
+     creep law waits for one. */
+  void setup(LAMMPS_NS::LAMMPS *lmp, IContactHistorySetup *hsetup)
   {
     if (!announced()) return;
     ContactSlots::offer(cmb_, "dc_rolling_kin", &record_);
     offered_ = true;
     kinematics_.setup(lmp, cmb_);
+    if (roll_min_ > 0.0) {
+      rolled_offset_ = hsetup->add_history_value("dc_rolled_x", "0");
+      if (hsetup->add_history_value("dc_rolled_y", "0") != rolled_offset_ + 1 ||
+          hsetup->add_history_value("dc_rolled_z", "0") != rolled_offset_ + 2)
+        lmp->error->all(FLERR, "Rolling model kalker: history values not consecutive");
+    }
   }
 
   /* Whether a rolling model shares this contact. */
@@ -228,13 +240,26 @@ public:
 #else
     const bool sphere = true;
 #endif
-    if (sphere && RollingKinematics::sphereStill(d, v_min_)) return record_.acts = false;
+    /* the net rolled distance, or (a pass that must not change it) a copy */
+    double scratch[3] = {0.0, 0.0, 0.0}, *rolled = scratch;
+    if (rolled_offset_ >= 0) {
+      rolled = &d.contact_history[rolled_offset_];
+      if (!(d.computeflag && d.shearupdate)) {
+        memcpy(scratch, rolled, sizeof scratch);
+        rolled = scratch;
+      }
+    }
+    if (sphere && RollingKinematics::sphereStill(d, v_min_)) {
+      rolled[0] = rolled[1] = rolled[2] = 0.0;
+      return record_.acts = false;
+    }
     kinematics_.compute(lmp, d, max_radius_factor_, record_.k);
     dc_rolling_params prm;
     prm.mu = 0.0;
     prm.v_min = v_min_;
     prm.model = DC_ROLLING_VJ;
-    record_.acts = dc_rolling_acts(&prm, &p, &record_.k) != 0;
+    prm.roll_min = roll_min_;
+    record_.acts = dc_rolling_acts_rolled(&prm, &p, &record_.k, lmp->update->dt, rolled) != 0;
     return record_.acts;
   }
 
@@ -243,8 +268,9 @@ private:
 
   ContactModelBase *cmb_;
   bool offered_;
+  int rolled_offset_;   /* the net rolled distance in contact history, or -1 */
   RollingRecord record_;
-  double v_min_, max_radius_factor_;
+  double v_min_, roll_min_, max_radius_factor_;
   RollingKinematics kinematics_;
 };
 

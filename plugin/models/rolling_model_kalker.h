@@ -68,6 +68,7 @@ class RollingModel<ROLLING_KALKER> : public RollingModelBase
 public:
   RollingModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     RollingModelBase(lmp, hsetup, c), creepModel(DC_ROLLING_VJ), vMin(DC_ROLLING_VMIN_DEFAULT),
+    rollMin(DC_ROLLING_DISTANCE_DEFAULT),
     maxRadiusFactor(100.0), handed(0), ntypes(0)
   {
     patch.request(c);
@@ -80,6 +81,7 @@ public:
     static const int ids[] = {DC_ROLLING_KALKER, DC_ROLLING_VJ};
     settings.registerChoice("rollingCreepModel", creepModel, names, ids, 2, "vermeulenJohnson");
     settings.registerDoubleSetting("rollingVelocityMin", vMin, DC_ROLLING_VMIN_DEFAULT);
+    settings.registerDoubleSetting("rollingDistanceMin", rollMin, DC_ROLLING_DISTANCE_DEFAULT);
     settings.registerDoubleSetting("maxRadiusFactor", maxRadiusFactor, 100.0);
   }
 
@@ -121,6 +123,7 @@ public:
         p.mu = mu[i][j];
         p.v_min = vMin;
         p.model = creepModel;
+        p.roll_min = rollMin;
         dc_param_error err;
         char msg[320], what[256];
         if (dc_rolling_check(&p, &err) != DC_OK) {
@@ -212,7 +215,7 @@ private:
   }
 
   int creepModel;
-  double vMin, maxRadiusFactor;
+  double vMin, rollMin, maxRadiusFactor;
   const RollingRecord *handed;   /* the tangential model's hand-over record (rolling_contact.h) */
   int ntypes;
   std::vector<dc_rolling_params> params;

@@ -86,7 +86,7 @@ public:
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
-    handover.setup(lmp);
+    handover.setup(lmp, hsetup);
     for (int k = 0; k < nfields(); k++) {
       const int off = hsetup->add_history_value(dc_classical_tangential_history[k].name,
                                                 dc_classical_tangential_history[k].flips ? "1" : "0");

@@ -75,7 +75,7 @@ public:
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     patch.setup(lmp, c);
-    handover.setup(lmp);
+    handover.setup(lmp, hsetup);
     const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
     const int need = neighbor->oneatom * (nfields + 40);
     if (neighbor->pgsize < need) neighbor->pgsize = need;

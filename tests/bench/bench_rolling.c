@@ -93,7 +93,7 @@ int main(void)
   dc_param_error err;
   dc_mindlin_pair_init(2e9 * 1.3, 0.3, 2e9 * 1.3, 0.3, &m);
   dc_rolling_material_init(&m, &rm, &err);
-  const dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER}, pv = {0.4, 1e-6, DC_ROLLING_VJ};
+  const dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER, 0.0}, pv = {0.4, 1e-6, DC_ROLLING_VJ, 0.0};
 
   printf("dc_rolling_force, ns per call (best of 5, %d contacts, creepage up to 5e-4, spin):\n", N);
   printf("  circle (sphere), Kalker linear     %6.1f\n", time_force(&pk, &rm, 1, 0));

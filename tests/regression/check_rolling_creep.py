@@ -285,7 +285,7 @@ for name, beyond in (("v0 3 mm/s", None), ("10 x the limit", 10.0), ("100 x the 
     v0 = 0.003 if beyond is None else V0 * (1e-6 / beyond) / dt_s
     vf = v0 / (1 + I / (m * cl * cl))
     r2 = release("slow%d" % (0 if beyond is None else beyond), "kalker", 1e-6, 20000, every=1, v0=v0,
-                 rset="rollingVelocityMin 1e-5")
+                 rset="rollingVelocityMin 1e-5 rollingDistanceMin 0")
     rolling = r2[len(r2) // 4:]
     tail = max(abs(r[3]) for r in r2[-1000:]) / (MU * m * GRAV)
     c.true(chatter(rolling) == 0 and tail <= 1e-9 and abs(r2[-1][1] / vf - 1) <= 1e-6,

@@ -3292,7 +3292,7 @@ static void fuzz_rolling(void)
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
     const dc_rolling_params p = {A(U() < 0.8 ? U() : PICK(0.0, -0.0, 1e300)),
-                                 A(U() < 0.8 ? fz_log(1e-9, 1e-1) : PICK(0.0, DBL_TRUE_MIN, -1e-6)), AI(UI(2))};
+                                 A(U() < 0.8 ? fz_log(1e-9, 1e-1) : PICK(0.0, DBL_TRUE_MIN, -1e-6)), AI(UI(2)), 0.0};
     const fz_spec t[3] = {{names[0], p.mu, 1, nonneg_fin(p.mu)},
                           {names[1], p.v_min, 1, pos_fin(p.v_min)},
                           {names[2], p.model, 1, p.model == DC_ROLLING_KALKER || p.model == DC_ROLLING_VJ}};
@@ -3452,7 +3452,7 @@ static void fuzz_rolling(void)
     fz_call();
     const dc_rolling_material *rm = &rmpool[UI(nrm)];
     const dc_rolling_params p = {A(U() < 0.8 ? U() : PICK(0.0, 1.0)), A(U() < 0.8 ? fz_log(1e-9, 1e-3) : fz_pos()),
-                                 AI(UI(2))};
+                                 AI(UI(2)), 0.0};
     double n[3], u[3], v[3];
     unit_vector(n);
     dc_tangent_basis(n, u, v);

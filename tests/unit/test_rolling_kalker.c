@@ -189,7 +189,7 @@ static void test_oblique(void)
     /* c = (a b)^1/2 = 1e-3, the major axis at -alpha from the rolling direction x */
     const double a = 1e-3 * sqrt(g), b = 1e-3 / sqrt(g);
     dc_patch pa = {a, b, {cos(al), -sin(al), 0.0}, 100.0, 100.0, 1.0};
-    dc_rolling_params p = {0.3, 1e-6, DC_ROLLING_KALKER};
+    dc_rolling_params p = {0.3, 1e-6, DC_ROLLING_KALKER, 0.0};
     dc_rolling_kin k = kin_of(1.0, 1e-9, 0.0, 0.0);
     dc_rolling_out o;
     CHECK(dc_rolling_force(&p, &rm, &pa, n, &k, &o) == DC_OK);
@@ -468,7 +468,7 @@ static void test_acts(void)
   unsigned long long seed = 99;
   long agree = 0, total = 0;
   for (int it = 0; it < 20000; it++) {
-    dc_rolling_params p = {0.4, it % 3 == 0 ? 1e-3 : 0.1 * check_uniform(&seed), it % 2};
+    dc_rolling_params p = {0.4, it % 3 == 0 ? 1e-3 : 0.1 * check_uniform(&seed), it % 2, 0.0};
     const double a = check_uniform(&seed) < 0.1 ? 0.0 : 1e-3 * check_uniform(&seed) + 1e-6;
     dc_patch pa = {a, a * (0.2 + 0.8 * check_uniform(&seed)), {1.0, 0.0, 0.0}, 1.0, 1.0,
                    check_uniform(&seed) < 0.1 ? 0.0 : 1.0};
@@ -492,7 +492,7 @@ static void test_forces(void)
   const double nu = 0.3;
   dc_rolling_material rm = mat(nu);
   CHECK_REL(rm.G, 1e9, 1e-15, "G combined");
-  dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER}, pv = {0.4, 1e-6, DC_ROLLING_VJ};
+  dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER, 0.0}, pv = {0.4, 1e-6, DC_ROLLING_VJ, 0.0};
   const double a = 2e-3, b = 1e-3, Fn = 500.0, G = 1e9, cc = sqrt(a * b);
   dc_patch pa = {a, b, {1.0, 0.0, 0.0}, Fn, Fn, 1.0};
   dc_rolling_out o, ov;
@@ -604,7 +604,7 @@ static void test_swap(void)
   const double dvj[3] = {-0.004, 0.003, -0.001}, dwj[3] = {3.0, -24.0, -1.5};
   dc_patch pa = {3e-3, 1e-3, {ax[0], ax[1], ax[2]}, 200.0, 200.0, 1.0};
   for (int model = 0; model < 2; model++) {
-    dc_rolling_params p = {0.3, 1e-6, model};
+    dc_rolling_params p = {0.3, 1e-6, model, 0.0};
     dc_rolling_kin ki, kj;
     dc_rolling_out oi, oj;
     CHECK(dc_rolling_kinematics(nn, &ci, &cj, dv, dw, &ki) == DC_OK);
@@ -627,7 +627,7 @@ static void test_zero_speed(void)
   dc_rolling_material rm = mat(0.25);
   dc_patch pa = {2e-3, 1e-3, {1.0, 0.0, 0.0}, 10.0, 10.0, 1.0};
   for (int model = 0; model < 2; model++) {
-    dc_rolling_params p = {0.5, 1e-4, model};
+    dc_rolling_params p = {0.5, 1e-4, model, 0.0};
     dc_rolling_out o;
     dc_rolling_kin k = kin_of(0.0, 0.0, 0.0, 0.0);
     k.slip[0] = 0.3;
@@ -668,7 +668,7 @@ static void test_sweep(void)
   unsigned long long s = 777;
   long ok = 0, err = 0, bad = 0;
   for (int it = 0; it < 300000; it++) {
-    dc_rolling_params p = {pick(&s, 0.4), pick(&s, 1e-3), (int)(check_uniform(&s) * 2.2)};
+    dc_rolling_params p = {pick(&s, 0.4), pick(&s, 1e-3), (int)(check_uniform(&s) * 2.2), 0.0};
     static dc_rolling_material rm;
     if (it % 64 == 0) {
       /* a new material now and then (its set-up sums 17 series) */
@@ -775,7 +775,7 @@ static void test_extremes(void)
      1e-278): was DC_ERANGE */
   const double nz[3] = {0.0, 0.0, 1.0};
   const dc_rolling_material rm = mat(0.25);
-  const dc_rolling_params p = {0.5, 1e-3, DC_ROLLING_KALKER};
+  const dc_rolling_params p = {0.5, 1e-3, DC_ROLLING_KALKER, 0.0};
   dc_patch pa = {1e142, 1e142, {0.0, 0.0, 0.0}, 1e274, 1e274, 1.0};
   dc_rolling_kin kk = kin_of(1e290, 0.0, 1e-278, 0.0);
   dc_rolling_out o;
@@ -797,7 +797,7 @@ static void test_extremes(void)
 static void test_params(void)
 {
   dc_param_error e;
-  dc_rolling_params p = {0.3, 1e-3, DC_ROLLING_VJ};
+  dc_rolling_params p = {0.3, 1e-3, DC_ROLLING_VJ, 0.0};
   CHECK(dc_rolling_check(&p, &e) == DC_OK);
   p.mu = -0.1;
   CHECK(dc_rolling_check(&p, &e) == DC_EDOM && !strcmp(e.name, "coefficientFriction"));
@@ -873,7 +873,7 @@ static void sphere_run(double f, int stepped, int steps, double s_y0, double w0,
   const double n[3] = {0.0, 0.0, 1.0}, R = 1e-3, m = 2500.0 * 4.0 / 3.0 * M_PI * R * R * R, I = 0.4 * m * R * R;
   const double V = 0.01, delta = 2e-6, c = sqrt(R * delta);
   dc_rolling_material rm = mat(0.25);
-  dc_rolling_params p = {0.5, 1e-6, DC_ROLLING_KALKER};
+  dc_rolling_params p = {0.5, 1e-6, DC_ROLLING_KALKER, 0.0};
   dc_patch pa = {c, c, {1.0, 0.0, 0.0}, 1.0, 1.0, 1.0};
   dc_kalker_coef cf;
   dc_kalker_coefficients(&rm, 1.0, &cf);
@@ -923,7 +923,7 @@ static void test_stable_step(void)
   {
     const double n[3] = {0.0, 0.0, 1.0};
     dc_rolling_material rm = mat(0.3);
-    dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER};
+    dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER, 0.0};
     dc_patch pa = {2e-3, 1e-3, {1.0, 0.0, 0.0}, 500.0, 500.0, 1.0};
     unsigned long long seed = 7;
     int same = 1;
@@ -953,7 +953,7 @@ static void test_stable_step(void)
   {
     const double n[3] = {0.0, 0.0, 1.0};
     dc_rolling_material rm = mat(0.3);
-    dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER};
+    dc_rolling_params pk = {0.4, 1e-6, DC_ROLLING_KALKER, 0.0};
     dc_patch pa = {1e-3, 1e-3, {1.0, 0.0, 0.0}, 500.0, 500.0, 1.0};
     dc_rolling_kin k = kin_of(1.0, 1e-6, 0.0, 0.0);
     dc_rolling_out o;
@@ -986,9 +986,64 @@ static void test_stable_step(void)
   }
 }
 
+/* ------------------------------------------------------------------ */
+/* The hand-over with Kalker's steady state (dc_rolling_acts_rolled): steady
+   rolling hands over after a net rolled distance of roll_min a, to the
+   step; a contact rocking back and forth (the rolling direction reversing)
+   never does; V <= v_min or an unformed patch clears the distance;
+   roll_min = 0 is dc_rolling_acts. */
+static void test_rolled(void)
+{
+  dc_rolling_params p = {0.5, 1e-3, DC_ROLLING_VJ, 2.0};
+  dc_patch pa = {1e-4, 1e-4, {1.0, 0.0, 0.0}, 1.0, 1.0, 1.0};
+  const double dt = 1e-6, V = 0.01;   /* 1e-8 m per step: 2 a = 2e-4 m after 20000 steps */
+  dc_rolling_kin k = kin_of(V, 1e-4, 0.0, 0.0);
+  double rolled[3] = {0.0, 0.0, 0.0};
+  int first = -1;
+  for (int i = 1; i <= 30000 && first < 0; i++)
+    if (dc_rolling_acts_rolled(&p, &pa, &k, dt, rolled)) first = i;
+  CHECK(first >= 19999 && first <= 20001);
+  printf("rolled-distance hand-over: steady rolling at %g m/s acts from step %d (2 a / (V dt) = 20000)\n", V, first);
+  /* rocking: 500 steps each way, 100 cycles */
+  double r2[3] = {0.0, 0.0, 0.0};
+  int acted = 0;
+  for (int i = 0; i < 100000; i++) {
+    dc_rolling_kin kr = kin_of(V, 1e-4, 0.0, 0.0);
+    if ((i / 500) % 2) kr.ex[0] = -1.0;
+    acted += dc_rolling_acts_rolled(&p, &pa, &kr, dt, r2);
+  }
+  CHECK(acted == 0 && fabs(r2[0]) <= 5.0e-6);
+  printf("rolled-distance hand-over: a contact rocking back and forth (5e-6 m each way) never hands over (%d steps)\n",
+         acted);
+  /* stopping clears it; an unformed patch clears it */
+  dc_rolling_kin ks = kin_of(0.5e-3, 1e-4, 0.0, 0.0);
+  CHECK(dc_rolling_acts_rolled(&p, &pa, &ks, dt, rolled) == 0 && rolled[0] == 0.0 && rolled[1] == 0.0);
+  rolled[0] = 1.0;
+  pa.formed = 0.0;
+  CHECK(dc_rolling_acts_rolled(&p, &pa, &k, dt, rolled) == 0 && rolled[0] == 0.0);
+  pa.formed = 1.0;
+  /* roll_min = 0: dc_rolling_acts */
+  p.roll_min = 0.0;
+  unsigned long long seed = 11;
+  int same = 1;
+  for (int i = 0; i < 1000; i++) {
+    dc_rolling_kin kk = kin_of(2e-3 * check_uniform(&seed), 1e-4, 0.0, 0.0);
+    double z[3] = {0.0, 0.0, 0.0};
+    same &= dc_rolling_acts_rolled(&p, &pa, &kk, dt, z) == dc_rolling_acts(&p, &pa, &kk);
+  }
+  CHECK(same);
+  /* the setting's range */
+  dc_param_error err;
+  p.roll_min = -1.0;
+  CHECK(dc_rolling_check(&p, &err) == DC_EDOM && strcmp(err.name, "rollingDistanceMin") == 0);
+  p.roll_min = 2.0;
+  CHECK(dc_rolling_check(&p, &err) == DC_OK);
+}
+
 int main(void)
 {
   test_stable_step();
+  test_rolled();
   test_speed_bound();
   test_capped();
   test_acts();

@@ -138,10 +138,13 @@ typedef struct {
   double mu;     /* coefficientFriction, >= 0 */
   double v_min;  /* rollingVelocityMin [m/s], > 0: at V <= v_min the law does not act */
   int model;     /* setting rollingCreepModel: DC_ROLLING_KALKER or DC_ROLLING_VJ */
+  double roll_min;  /* rollingDistanceMin [-], >= 0: the net distance a contact must have
+                       rolled, over its patch's semi-axis a, before the law acts
+                       (dc_rolling_acts_rolled); 0: at once */
 } dc_rolling_params;
 
 /* Parameter check (dc/contract.h): mu >= 0 finite, v_min > 0 finite,
-   model 0 or 1. DC_OK, or DC_EDOM with err naming the property. */
+   model 0 or 1, roll_min >= 0 finite. DC_OK, or DC_EDOM with err naming the property. */
 int dc_rolling_check(const dc_rolling_params *p, dc_param_error *err);
 
 /* The material pair as the law needs it: Kalker's G and nu and the
@@ -294,6 +297,21 @@ double dc_rolling_step_factor(double x);
    two acts. Reads p->v_min, patch->formed, patch->a and k->V only; no
    domain check (dc_rolling_force makes them). */
 int dc_rolling_acts(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k);
+
+/* The hand-over rule with Kalker's steady state: the creep law is the
+   steady-state law of a contact that rolls, whose traction pattern is set
+   up as material crosses the patch (Kalker's transient rolling: the creep
+   force builds over a rolled distance of the order of the patch, and a
+   contact that rocks back and forth never reaches it). So the law acts
+   once the contact has rolled a net distance of roll_min a since it last
+   stopped: rolled[3] (the contact's history, zero for a new contact)
+   accumulates Vbar dt = V ex dt while the patch is formed and V > v_min,
+   and is cleared otherwise; returns 1 when |rolled| >= roll_min a (a the
+   patch's semi-axis; roll_min = 0: dc_rolling_acts). dt >= 0. A rocking
+   contact's rolled distance returns towards zero; steady rolling grows it
+   by V dt per step. No domain check (dc_rolling_force makes them). */
+int dc_rolling_acts_rolled(const dc_rolling_params *p, const dc_patch *patch, const dc_rolling_kin *k, double dt,
+                           double rolled[3]);
 
 /* An upper bound of the rolling speed V of two isotropic bodies (spheres,
    a sphere on a plane: curvatures ki, kj >= 0 with ki + kj > 0) from the
