@@ -4,7 +4,8 @@
    1e-320 .. 1e308 of either sign, 0, -0, subnormals, DBL_MAX, +-inf, NaN,
    values at and a few ulps around the domain edges) mixed with typical
    values inside each domain (each call draws how many of its arguments are
-   wild), 1e5 calls per function (fewer where one call is expensive: the
+   wild), 1e5 calls per function (DC_FUZZ_CALLS=1e7 in the environment
+   for the long run; fewer where one call is expensive: the
    full GW solver on small m only, see fuzz_gw_solve; N_GWP, N_TABLE_INIT,
    N_ROLL_MAT, N_KALKER_NU). For every call of a function that returns a status:
    - the status is a dc_status value;
@@ -64,7 +65,8 @@
 #include <stdarg.h>
 #include <time.h>
 
-#define N_CALLS 100000L
+/* calls per function: 1e5 (ctest), DC_FUZZ_CALLS=1e7 for the long run */
+static long N_CALLS = 100000L;
 
 /* ---------------------------------------------------------------- */
 /* Bookkeeping: one record per function.                             */
@@ -101,6 +103,13 @@ static fz_fn *fz_new(const char *name)
 }
 
 static void fz_done(fz_fn *f) { f->seconds += fz_now(); }
+
+/* A call of a function checked against another (its own statuses counted). */
+static void fz_count(fz_fn *f, int st)
+{
+  f->calls++;
+  if (st >= 0 && st <= 3) f->st[st]++;
+}
 
 /* Counts a failure; prints the first three of each reason. */
 static void fz_fail(fz_fn *f, const char *why, int st, const char *fmt, ...)
@@ -1688,6 +1697,8 @@ static void fuzz_cmd(void)
   /* the step: chains of calls on one history (a contact), its inputs now
      and then wild; now and then a fresh or a corrupted history */
   f = fz_new("dc_cmd_step");
+  fz_fn *ftr = fz_new("dc_cmd_step_trusted");
+  ftr->seconds = 0.0;
   dc_cmd_state h;
   memset(&h, 0, sizeof h);
   int corrupt = 0;
@@ -1743,6 +1754,19 @@ static void fuzz_cmd(void)
     dc_cmd_out o;
     SENTINEL(o);
     const int st = dc_cmd_step(&p, &m, &pa, n, du, dphi, dt, &h, &o);
+    /* the trusted step (no input-domain check): inside the domain the same
+       status and bits */
+    if (dom) {
+      ftr->seconds -= fz_now();
+      dc_cmd_state ht = h0;
+      dc_cmd_out ot;
+      SENTINEL(ot);
+      const int stt = dc_cmd_step_trusted(&p, &m, &pa, n, du, dphi, dt, &ht, &ot);
+      fz_count(ftr, stt);
+      FZ_EXPECT(ftr, stt == st && (st != DC_OK || (!memcmp(&ot, &o, sizeof o) && !memcmp(&ht, &h, sizeof h))),
+                "differs from dc_cmd_step inside the domain", "status %d vs %d", stt, st);
+      ftr->seconds += fz_now();
+    }
     const int untouched = UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h);
     /* without twisting the twist part of h is neither read nor written */
     /* (the pieces in use: a corrupted unused piece is not read) */
@@ -3856,9 +3880,294 @@ static void known_cases(void)
 
 /* ---------------------------------------------------------------- */
 
+/* ---------------------------------------------------------------- */
+/* The stable step and the rolled-distance hand-over of rolling_kalker.h,
+   the bound forms split from their constructors (gw_rough.h), the adhesive
+   table's parts (gw_rough_adhesive_table.h), the inline speed bound and
+   sphere patch: run after the blocks above.                          */
+
+/* A rolling contact inside the force law's domain now and then made wild:
+   p, patch, unit n, kinematics; *bad: a non-finite input. */
+static void draw_rolling(dc_rolling_params *p, dc_patch *pa, double n[3], dc_rolling_kin *kk, int *bad)
+{
+  p->mu = A(U() < 0.8 ? U() : PICK(0.0, 1.0));
+  p->v_min = A(U() < 0.8 ? fz_log(1e-9, 1e-3) : fz_pos());
+  p->model = AI(UI(2));
+  p->roll_min = A(U() < 0.3 ? 0.0 : 4.0 * U());
+  double u[3], v[3];
+  unit_vector(n);
+  dc_tangent_basis(n, u, v);
+  const double a = U() < 0.05 ? 0.0 : fz_log(1e-7, 1e-2), r = U() < 0.3 ? 1.0 : 0.05 + 0.95 * U();
+  pa->a = A(a);
+  pa->b = A(a * r);
+  const double th = 2.0 * M_PI * U(), ph = 2.0 * M_PI * U();
+  for (int i = 0; i < 3; i++) pa->axis[i] = A(r == 1.0 ? 0.0 : cos(th) * u[i] + sin(th) * v[i]);
+  pa->F_bound = pa->F_elastic = A(U() < 0.05 ? 0.0 : fz_log(1e-6, 1e3));
+  pa->formed = A(U() < 0.03 ? 0.0 : 1.0);
+  kk->V = A(U() < 0.1 ? PICK(0.0, p->v_min) : fz_log(1e-6, 10.0));
+  const double cr = fz_log(1e-8, 1e-1), sa = 2.0 * U() - 1.0, sb = 2.0 * U() - 1.0;
+  for (int i = 0; i < 3; i++) {
+    kk->ex[i] = A(cos(ph) * u[i] + sin(ph) * v[i]);
+    kk->slip[i] = A(kk->V * cr * (sa * u[i] + sb * v[i]));
+  }
+  kk->spin = A(kk->V * cr * (2.0 * U() - 1.0) / (a > 0.0 ? a : 1.0));
+  *bad = !ALLFIN(p->mu, p->v_min, n[0], n[1], n[2], kk->V, kk->ex[0], kk->ex[1], kk->ex[2], kk->slip[0],
+                 kk->slip[1], kk->slip[2], kk->spin, pa->a, pa->b, pa->F_bound, pa->formed, pa->axis[0], pa->axis[1],
+                 pa->axis[2]);
+}
+
+static void fuzz_rolling_step(void)
+{
+  /* the factor: (0, 1], x phi(x) <= 1, 1 for x <= 0 or NaN */
+  fz_fn *f = fz_new("dc_rolling_step_factor");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double x = U() < 0.3 ? fz_special() : fz_wide(), s = dc_rolling_step_factor(x);
+    f->calls++;
+    FZ_EXPECT(f, (s > 0.0 || x == INFINITY) && s <= 1.0 &&
+                     (!(x > 0.0) ? s == 1.0 : x == INFINITY ? s == 0.0 : x * s <= 1.0 + 4.0 * DBL_EPSILON),
+              "not in (0, 1] (0 at +inf), or x phi(x) > 1", "x %.17g: %.17g", x, s);
+  }
+  fz_done(f);
+
+  /* the stepped force: the force law's contract with the step's inputs;
+     dt = 0 the plain law's bits; the bounds and the factor's range */
+  f = fz_new("dc_rolling_force_step");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    dc_rolling_params p;
+    dc_patch pa;
+    double n[3];
+    dc_rolling_kin kk;
+    int bad;
+    draw_rolling(&p, &pa, n, &kk, &bad);
+    const dc_rolling_material *rm = &rmpool[UI(nrm)];
+    const dc_rolling_step sp = {A(U() < 0.2 ? 0.0 : fz_log(1e-9, 1e-3)), A(fz_log(1e-3, 1e9)), A(fz_log(1e3, 1e15))};
+    const int sbad = !ALLFIN(sp.dt, sp.inv_m, sp.inv_I);
+    dc_rolling_out o, o0;
+    SENTINEL(o);
+    const int st = dc_rolling_force_step(&p, rm, &pa, n, &kk, &sp, &o);
+    const int s0 = dc_rolling_force(&p, rm, &pa, n, &kk, &o0);
+    const int sok = !sbad && sp.dt >= 0.0 && sp.inv_m >= 0.0 && sp.inv_I >= 0.0;
+    /* inside: where the plain law is DC_OK and the step's inputs are valid */
+    FZ_CHECK(f, st, bad || sbad, s0 == DC_OK && sok, UNTOUCHED(o),
+             FIN(o.F) && ALLFIN(o.Mz, o.Fx, o.Fy, o.saturation, o.step_factor), "mu %.17g a %.17g V %.17g dt %.17g "
+             "inv_m %.17g inv_I %.17g", p.mu, pa.a, kk.V, sp.dt, sp.inv_m, sp.inv_I);
+    FZ_EXPECT(f, !sok || st == DC_OK || st == s0, "fails where the plain law does not", "status %d vs %d", st, s0);
+    if (st == DC_OK) {
+      const double F = hypot(o.Fx, o.Fy), muF = p.mu * pa.F_bound;
+      FZ_EXPECT(f, (o.rolling == 0 || (o.step_factor >= 0.0 && o.step_factor <= 1.0)) &&
+                       F <= muF * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN &&
+                       (sp.dt != 0.0 || (o.Fx == o0.Fx && o.Fy == o0.Fy && o.Mz == o0.Mz)),
+                "factor out of [0, 1], above mu F_b, or dt = 0 not the plain law",
+                "dt %.17g factor %.17g |F| %.17g mu F_b %.17g", sp.dt, o.step_factor, F, muF);
+    }
+  }
+  fz_done(f);
+
+  /* the hand-over: 0 or 1; the distance cleared where the contact does
+     not act; roll_min = 0 from zero is dc_rolling_acts; finite inputs keep
+     it finite */
+  f = fz_new("dc_rolling_acts_rolled");
+  double rolled[3] = {0.0, 0.0, 0.0};
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    dc_rolling_params p;
+    dc_patch pa;
+    double n[3];
+    dc_rolling_kin kk;
+    int bad;
+    draw_rolling(&p, &pa, n, &kk, &bad);
+    if (U() < 0.01) rolled[0] = rolled[1] = rolled[2] = 0.0;
+    const double dt = A(fz_log(1e-9, 1e-3));
+    const int acts = dc_rolling_acts(&p, &pa, &kk);
+    const int r = dc_rolling_acts_rolled(&p, &pa, &kk, dt, rolled);
+    double z[3] = {0.0, 0.0, 0.0};
+    dc_rolling_params p0 = p;
+    p0.roll_min = 0.0;
+    const int r0 = dc_rolling_acts_rolled(&p0, &pa, &kk, dt, z);
+    /* (no domain check: the finite-input promises for finite inputs, and
+       for rolled distances below 1e100 m) */
+    const int fine = !bad && isfinite(p.roll_min) && isfinite(dt) && fabs(kk.V * dt) < 1e90 && max_abs3(rolled) < 1e95;
+    f->calls++;
+    FZ_EXPECT(f, (r == 0 || r == 1) && (acts || (rolled[0] == 0.0 && rolled[1] == 0.0 && rolled[2] == 0.0 && !r)) &&
+                     (!fine || (r0 == acts && FIN(rolled))) && (!r || acts),
+              "not 0/1, not cleared, not dc_rolling_acts at roll_min 0, or not finite",
+              "V %.17g v_min %.17g a %.17g roll_min %.17g: %d (acts %d)", kk.V, p.v_min, pa.a, p.roll_min, r, acts);
+    if (!FIN(rolled) || max_abs3(rolled) >= 1e95) rolled[0] = rolled[1] = rolled[2] = 0.0;
+  }
+  fz_done(f);
+
+  /* the speed bound: never below the kinematics' V for spheres */
+  f = fz_new("dc_rolling_speed_bound_isotropic");
+  for (long k = 0; k < N_CALLS; k++) {
+    double n[3], dv[3], dw[3];
+    unit_vector(n);
+    const double ki = fz_log(1e-6, 1e6), kj = U() < 0.3 ? 0.0 : fz_log(1e-6, 1e6);
+    const double sv = fz_log(1e-300, 1e300), sw = fz_log(1e-300, 1e300);
+    for (int i = 0; i < 3; i++) {
+      dv[i] = sv * (2.0 * U() - 1.0);
+      dw[i] = sw * (2.0 * U() - 1.0);
+    }
+    const dc_rolling_curvature ci = {ki, ki, {0.0, 0.0, 0.0}}, cj = {kj, kj, {0.0, 0.0, 0.0}};
+    dc_rolling_kin kk;
+    const double b = dc_rolling_speed_bound_isotropic(ki, kj, dv, dw);
+    const int st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kk);
+    f->calls++;
+    FZ_EXPECT(f, b >= 0.0 && (st != DC_OK || b >= kk.V), "below the rolling speed, or negative / NaN",
+              "k %.17g %.17g |dv| %.17g |dw| %.17g: bound %.17g V %.17g", ki, kj, sv, sw, b, kk.V);
+  }
+  fz_done(f);
+}
+
+static void fuzz_bound_parts(void)
+{
+  /* dc_gw_bound_material then dc_gw_bound_bind: dc_gw_bound_init's bits */
+  fz_fn *f = fz_new("dc_gw_bound_material");
+  fz_fn *fb = fz_new("dc_gw_bound_bind");
+  fb->seconds = 0.0;
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(fz_log(1e5, 1e12)), n = A(fz_log(1e-2, 1e6)), sg = A(g->R_minor * fz_log(1e-9, 1e-3));
+    const int bad = !ALLFIN(E, n, sg);
+    dc_gw_bound b, bi;
+    SENTINEL(b);
+    SENTINEL(bi);
+    const int st = dc_gw_bound_material(E, n, sg, &b);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && n > 0.0 && sg > 0.0 && 1.0 / sg < DBL_MAX, UNTOUCHED(b), 1,
+             "Estar %.17g n_asp %.17g sigma %.17g", E, n, sg);
+    const int si = dc_gw_bound_init(g, E, n, sg, &bi);
+    if (st == DC_OK) {
+      fb->seconds -= fz_now();
+      const int sbd = dc_gw_bound_bind(&b, g);
+      fz_count(fb, sbd);
+      FZ_EXPECT(fb, sbd == si && (si != DC_OK || !memcmp(&b, &bi, sizeof b)), "not dc_gw_bound_init's bits",
+                "Estar %.17g n_asp %.17g sigma %.17g: %d vs %d", E, n, sg, sbd, si);
+      fb->seconds += fz_now();
+    }
+  }
+  fz_done(f);
+
+  /* the sphere patch: dc_hertz_normal's bits on the circle, or 0 */
+  f = fz_new("dc_hertz_patch_circle");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double R = fz_log(1e-9, 1e3), E = fz_log(1e3, 1e12), d = R * fz_log(1e-12, 1e-1);
+    double kn, Sn;
+    dc_hertz_stiffness(E, R, d, &kn, &Sn);
+    dc_patch pc;
+    const int ok = dc_hertz_patch_circle(R, d, kn * d, &pc);
+    dc_hertz_geom g;
+    dc_contact c;
+    dc_hertz_geometry_circle(R, &g);
+    const int sc = dc_hertz_normal(&g, E, d, &c);
+    f->calls++;
+    FZ_EXPECT(f, !ok || (sc == DC_OK && pc.a == c.a && pc.b == c.b && pc.F_bound == c.F_bound),
+              "not dc_hertz_normal's patch", "R %.17g E* %.17g delta %.17g", R, E, d);
+  }
+  fz_done(f);
+}
+
+static void fuzz_gwa_parts(void)
+{
+  /* the eta cell: clamped to the table's rows for any finite eta; the
+     kink: finite for |eta| <= 50 (the step passes the table's eta) and
+     any finite x */
+  fz_fn *f = fz_new("dc_gwa_table_eta_cell");
+  fz_fn *fk = fz_new("dc_gwa_table_kink");
+  fk->seconds = 0.0;
+  const double eta_hi = DC_GWA_TABLE_ETA_LO + (DC_GWA_TABLE_NETA - 1.0) / DC_GWA_TABLE_ETA_PER_UNIT;
+  for (long k = 0; k < N_CALLS; k++) {
+    const double eta = U() < 0.8 ? -8.0 + 20.0 * U() : U() < 0.5 ? PICK(DC_GWA_TABLE_ETA_LO, eta_hi) : fz_wide();
+    const double x = U() < 0.8 ? -20.0 + 30.0 * U() : fz_wide();
+    dc_gwa_table_eta c;
+    SENTINEL(c);
+    dc_gwa_table_eta_cell(eta, &c);
+    f->calls++;
+    FZ_EXPECT(f, c.j >= 0 && c.j < DC_GWA_TABLE_NETA && c.ue >= 0.0 && c.ue <= 1.0 && c.eta >= DC_GWA_TABLE_ETA_LO &&
+                     c.eta <= eta_hi && fin(c.w, 4), "not a cell of the table's rows", "eta %.17g: row %d ue %.17g",
+              eta, c.j, c.ue);
+    fk->seconds -= fz_now();
+    double C, Cx;
+    const double ek = fabs(eta) <= 50.0 ? eta : -50.0 + 100.0 * U();
+    dc_gwa_table_kink(x, ek, &C, &Cx);
+    fk->calls++;
+    FZ_EXPECT(fk, isfinite(C) && isfinite(Cx), "not finite", "x %.17g eta %.17g: %.17g %.17g", x, ek, C, Cx);
+    fk->seconds += fz_now();
+  }
+  fz_done(f);
+
+  /* the elliptic correction: finite G, Gx for a set-up from radii */
+  f = fz_new("dc_gwa_table_ell_apply");
+  for (long k = 0; k < N_CALLS; k++) {
+    const dc_gwa_table_pair *p = &gapool[UI(nga)];
+    if (p->w == 0.0) continue;
+    const double Rm = fz_log(1e-6, 1e-1), rho = fz_log(1e-7, 1.0);
+    dc_gwa_table_radius r;
+    if (dc_gwa_table_radius_init_elliptic(p, Rm, Rm * rho, &r) != DC_OK) continue;
+    const int b = UI(2);
+    const double x = -20.0 + 30.0 * U();
+    double kc[2] = {0.0, 0.0}, G = -fz_log(1e-12, 0.5), Gx = fz_sign(fz_log(1e-12, 1.0));
+    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x, r.cell.eta, &kc[0], &kc[1]);
+    dc_gwa_table_ell_apply(&r.ell, b, x, r.cell.eta, kc, &G, &Gx);
+    f->calls++;
+    FZ_EXPECT(f, isfinite(G) && isfinite(Gx), "not finite", "rho %.17g branch %d x %.17g: %.17g %.17g", rho, b, x, G, Gx);
+  }
+  fz_done(f);
+
+  /* a contact's record stepped by _step_contact_any and, where it applies,
+     _step_settled: dc_gwa_table_step_radius's status and bits; the reach
+     from the record is the set-up's */
+  f = fz_new("dc_gwa_table_step_contact_any");
+  fz_fn *fs = fz_new("dc_gwa_table_step_settled");
+  fz_fn *fr = fz_new("dc_gwa_table_contact_reach");
+  fs->seconds = fr->seconds = 0.0;
+  dc_gwa_table_contact con;
+  memset(&con, 0, sizeof con);
+  double hc[2] = {0.0, 0.0}, hr[2] = {0.0, 0.0}, x = 0.0;
+  const dc_gwa_table_pair *p = &gapool[0];
+  dc_gwa_table_radius rr;
+  for (long k = 0; k < N_CALLS; k++) {
+    if (k == 0 || U() < 0.002) {
+      p = &gapool[UI(nga)];
+      const double R = fz_log(1e-6, 1e-1);
+      if (dc_gwa_table_contact_init(p, R, &con) != DC_OK || dc_gwa_table_radius_init(p, R, &rr) != DC_OK) {
+        k--;
+        continue;
+      }
+      hc[0] = hc[1] = hr[0] = hr[1] = 0.0;
+      x = 4.0 * p->sigma;
+      fr->seconds -= fz_now();
+      fr->calls++;
+      FZ_EXPECT(fr, dc_gwa_table_contact_reach(p, &con) == rr.reach || p->w == 0.0, "not the set-up's reach",
+                "R %.17g: %.17g vs %.17g", R, dc_gwa_table_contact_reach(p, &con), rr.reach);
+      fr->seconds += fz_now();
+    }
+    x += p->sigma * fz_sign(fz_log(1e-3, 0.5));
+    dc_gwa_table_out oc, orr, os;
+    SENTINEL(oc);
+    double hs[2] = {hc[0], hc[1]};
+    dc_gwa_table_contact cs = con;
+    fs->seconds -= fz_now();
+    const int settled = dc_gwa_table_step_settled(p, &cs, x, hs, &os);
+    fs->calls++;
+    fs->seconds += fz_now();
+    const int st = dc_gwa_table_step_contact_any(p, &con, x, hc, &oc);
+    const int sr = dc_gwa_table_step_radius(p, &rr, x, hr, &orr);
+    FZ_CHECK(f, st, 0, 1, UNTOUCHED(oc), FIN(oc), "delta %.17g", x);
+    FZ_EXPECT(f, st == sr && (st != DC_OK || (!memcmp(&oc, &orr, sizeof oc) && !memcmp(hc, hr, sizeof hc))),
+              "not dc_gwa_table_step_radius's bits", "delta %.17g: %d vs %d", x, st, sr);
+    FZ_EXPECT(fs, !settled || (st == DC_OK && !memcmp(&os, &oc, sizeof os) && !memcmp(hs, hc, sizeof hs)),
+              "a settled step not the full step's bits", "delta %.17g", x);
+    if (st != DC_OK) hc[0] = hc[1] = hr[0] = hr[1] = 0.0;
+  }
+  fz_done(f);
+}
+
 int main(void)
 {
   clock_gettime(CLOCK_MONOTONIC, &fz_t0);
+  if (getenv("DC_FUZZ_CALLS")) N_CALLS = (long)atof(getenv("DC_FUZZ_CALLS"));
+  if (N_CALLS < 1) N_CALLS = 1;
   memset(fz_ff, 0xFF, sizeof fz_ff);
   /* constructor pools start with ordinary members */
   dc_hertz_geom g;
@@ -3934,6 +4243,9 @@ int main(void)
   fuzz_damping_laws();
   fuzz_gw_sphere();
   fuzz_jamari_inline();
+  fuzz_rolling_step();
+  fuzz_bound_parts();
+  fuzz_gwa_parts();
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",
          "seconds");

@@ -174,7 +174,8 @@ static inline double dc_gwa_table_x_deep(int k)
 #define DC_GWA_KINK_K_HI 3.0
 
 /* C and dC/dx at (x, eta) (0 where K or w vanish); the generator adds it
-   to the unloading branch's G before taking the logarithm. */
+   to the unloading branch's G before taking the logarithm. Finite for
+   finite x and |eta| <= 50 (the step passes the table's eta). */
 void dc_gwa_table_kink(double x, double eta, double *C, double *Cx);
 
 /* One material (type) pair: E*, w, sigma, n_asp of dc_gw_rough_adhesive. */

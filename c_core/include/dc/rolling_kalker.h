@@ -287,7 +287,9 @@ int dc_rolling_force_step(const dc_rolling_params *p, const dc_rolling_material 
                           const double n[3], const dc_rolling_kin *k, const dc_rolling_step *step,
                           dc_rolling_out *out);
 
-/* (1 + x^4)^-1/4 for x > 0, 1 for x <= 0 or NaN; 1/x where x^4 overflows. */
+/* (1 + x^4)^-1/4 for x > 0, 1 for x <= 0 or NaN; 1/x where x^4 overflows
+   (0 at x = +inf: a step ratio that overflows, inputs at the edge of the
+   doubles, gives no linear force). */
 double dc_rolling_step_factor(double x);
 
 /* The hand-over rule (zero rolling speed, above): 1 when dc_rolling_force
