@@ -2,6 +2,8 @@
 #ifndef DC_CLI_H
 #define DC_CLI_H
 
+#include <stdio.h>
+
 typedef struct {
   const char *name;
   int (*run)(int argc, char **argv);  /* argv[0] is the law name */
@@ -14,8 +16,11 @@ typedef struct {
   extern const dc_cli_command dc_cli_cmd_##law; \
   const dc_cli_command dc_cli_cmd_##law = {#law, run, summary}
 
-/* The subcommand of a law, NULL if there is none (dclaw.c). */
+/* The subcommand of a law, NULL if there is none (registry.c). */
 const dc_cli_command *dc_cli_find(const char *law);
+
+/* Prints each law's name and summary, one per line (registry.c). */
+void dc_cli_list(FILE *out);
 
 /* dclaw plot (plot.c): runs law subcommands and draws their tables with
    python3 and matplotlib (plot.py); argv[0] is "plot". */

@@ -1,29 +1,18 @@
 /* dclaw: evaluate a c_core force law for given inputs and print CSV.
    Usage: dclaw <law> [--key value ...]; dclaw --help lists the laws;
    dclaw plot draws laws' tables into a PNG (plot.c).
-   Each law's subcommand lives in cli/cmd_<law>.c (DC_CLI_COMMAND); the build
-   generates their table, dclaw_commands.h, from those file names. */
+   Each law's subcommand lives in cli/cmd_<law>.c (DC_CLI_COMMAND); their
+   table and its lookup are registry.c's. */
 #include "cli.h"
-#include "dclaw_commands.h"
 #include <stdio.h>
 #include <string.h>
-
-#define N_COMMANDS (sizeof dc_cli_commands / sizeof dc_cli_commands[0])
 
 /* Prints the usage line and the laws with their summaries. */
 static void usage(FILE *out)
 {
   fprintf(out, "usage: dclaw <law> [--key value ...]   (dclaw <law> --help for its keys)\n"
                "       dclaw " DC_CLI_PLOT_USAGE "   (dclaw plot --help)\nlaws:\n");
-  for (size_t i = 0; i < N_COMMANDS; i++)
-    fprintf(out, "  %-16s %s\n", dc_cli_commands[i]->name, dc_cli_commands[i]->summary);
-}
-
-const dc_cli_command *dc_cli_find(const char *law)
-{
-  for (size_t i = 0; i < N_COMMANDS; i++)
-    if (!strcmp(law, dc_cli_commands[i]->name)) return dc_cli_commands[i];
-  return NULL;
+  dc_cli_list(out);
 }
 
 int main(int argc, char **argv)

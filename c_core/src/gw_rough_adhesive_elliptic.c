@@ -197,8 +197,8 @@ int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major
   return DC_OK;
 }
 
-void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc, double *G,
-                            double *Gx)
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc,
+                            dc_gwa_table_circle_fn circle, double *G, double *Gx)
 {
   double dxi, xi = dc_gwae_xi(x, &dxi);
   const int deep = xi < DC_GWAE_XI_LO;
@@ -240,8 +240,7 @@ void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double e
     enum { K = 12 };
     double Gl, Gxl, Cl = 0.0, Cxl = 0.0, dxl;
     dc_gwae_xi(dc_gwae_x_lo, &dxl);   /* dz/dx there too (z's other terms below 1e-70) */
-    if (b == DC_GW_UNLOADING) dc_gwa_table_kink(dc_gwae_x_lo, eta, &Cl, &Cxl);
-    dc_gwa_table_reduced(b, dc_gwae_x_lo, eta, &Gl, &Gxl);
+    circle(b, dc_gwae_x_lo, eta, &Gl, &Gxl, &Cl, &Cxl);
     /* d ln r/dx at x_lo: four-point (error ~h^3) and Catmull-Rom */
     const double l4 = (-2.0 * a[0] - 3.0 * a[1] + 6.0 * a[2] - a[3]) * (DC_GWAE_XI_PER_UNIT / 6.0) * dxl;
     const double lc = (a[2] - a[0]) * (0.5 * DC_GWAE_XI_PER_UNIT) * dxl;

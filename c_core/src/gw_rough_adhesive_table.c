@@ -127,28 +127,8 @@ void dc_gwa_table_kink(double x, double eta, double *C, double *Cx)
   *Cx = w * Px + dw / wl * P;
 }
 
-/* eta clamped to the table, its cell j and position ue, and the cubic
-   Hermite weights at ue of a row's value, its eta slope, the next row's
-   value and slope */
-static void eta_cell(double eta, dc_gwa_table_eta *c)
-{
-  const double emax = DC_GWA_TABLE_ETA_LO + (double)(DC_GWA_TABLE_NETA - 1) / DC_GWA_TABLE_ETA_PER_UNIT;
-  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT;
-  if (eta < DC_GWA_TABLE_ETA_LO) eta = DC_GWA_TABLE_ETA_LO;
-  if (eta > emax) eta = emax;
-  c->eta = eta;
-  double ue = (eta - DC_GWA_TABLE_ETA_LO) * DC_GWA_TABLE_ETA_PER_UNIT;
-  int j = (int)ue;
-  if (j > DC_GWA_TABLE_NETA - 2) j = DC_GWA_TABLE_NETA - 2;
-  ue -= j;
-  const double u2 = ue * ue, u3 = u2 * ue;
-  c->j = j;
-  c->ue = ue;
-  c->w[0] = 2 * u3 - 3 * u2 + 1;
-  c->w[1] = (u3 - 2 * u2 + ue) * de;
-  c->w[2] = -2 * u3 + 3 * u2;
-  c->w[3] = (u3 - u2) * de;
-}
+/* eta clamped to the table, its cell (dc_gwa_table_eta_cell, inline) */
+static inline void eta_cell(double eta, dc_gwa_table_eta *c) { dc_gwa_table_eta_cell(eta, c); }
 
 /* A contact's eta cell (dc_gwa_table_step_contact) holds only eta until a
    step needs the rest (j < 0): a step that reads the cell the contact kept
@@ -407,6 +387,16 @@ int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_
   return DC_OK;
 }
 
+/* The circular table's G, dG/dx and the kink term's C, dC/dx (0 on
+   loading) at (x, eta) on branch b: what the elliptic correction's deep
+   tail reads (dc_gwa_table_circle_fn). */
+static void circle_at(int b, double x, double eta, double *G, double *Gx, double *C, double *Cx)
+{
+  *C = *Cx = 0.0;
+  if (b == DC_GW_UNLOADING) dc_gwa_table_kink(x, eta, C, Cx);
+  dc_gwa_table_reduced(b, x, eta, G, Gx);
+}
+
 /* branch force at overlap delta, unchecked inputs; 0 on success */
 static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_table_radius *r, double *cc, int b,
                                       double delta, double *F, double *kn)
@@ -420,7 +410,7 @@ static ALWAYS_INLINE int branch_force(const dc_gwa_table_pair *p, const dc_gwa_t
   if (r->ell.on) {
     double kc[2];
     reduced(b, x, &r->cell, cc, &G, &Gx, kc);
-    dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, kc, &G, &Gx);
+    dc_gwa_table_ell_apply(&r->ell, b, x, r->cell.eta, kc, circle_at, &G, &Gx);
   } else {
     reduced(b, x, &r->cell, cc, &G, &Gx, NULL);
   }
@@ -600,9 +590,4 @@ int dc_gwa_table_step(const dc_gwa_table_pair *p, double R, double delta, double
   const int st = dc_gwa_table_radius_init(p, R, &r);
   if (st != DC_OK) return st;
   return dc_gwa_table_step_radius(p, &r, delta, hist, o);
-}
-
-void dc_gwa_table_eta_cell(double eta, dc_gwa_table_eta *c)
-{
-  eta_cell(eta, c);
 }

@@ -12,7 +12,7 @@
 #include "dc/contract.h"
 #include "dc/poly14.h"
 #include "jkr_cbrt.h"
-#include "jkr_private.h"
+#include "jkr_elliptic_private.h"
 #include <float.h>
 #include <math.h>
 #include <string.h>
@@ -63,7 +63,7 @@ static void dc_jkr_Qn_(const dc_jkr_geom *G, double m, double m1, const dc_ellin
 /* Review Eqs. 19-23 in the cancellation-free Q/u form (header comment),
    with their derivatives in the solver variable v: v = m = e^2, or, for
    slender contacts (e2_hertz > 1/2), v = m1 = 1 - e^2, which keeps full
-   relative precision of b/a when it is small (jg_eval in jkr_private.h).
+   relative precision of b/a when it is small (jg_eval in jkr_elliptic_private.h).
    sv = dm/dv: the derivatives are returned in the solver variable v. */
 void dc_jkr_eval_m_(const dc_jkr_geom *G, double m, double m1, double sv, jg_point *p)
 {

@@ -5,7 +5,7 @@
 #include "dc/jkr_elliptic.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
-#include "jkr_private.h"
+#include "jkr_elliptic_private.h"
 #include <float.h>
 #include <math.h>
 

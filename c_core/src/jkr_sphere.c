@@ -3,7 +3,7 @@
    derivation is in dc/jkr_elliptic.h). */
 #include "dc/jkr_sphere.h"
 #include "dc/status.h"
-#include "jkr_private.h"
+#include "jkr_common.h"
 #include <float.h>
 #include <math.h>
 

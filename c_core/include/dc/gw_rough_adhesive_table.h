@@ -414,8 +414,28 @@ typedef struct {
   double rho;       /* the ratio used (rho clamped to [RHO_MIN, 1]) */
 } dc_gwa_table_ell;
 
-/* The eta cell at eta (clamped to the table's rows). */
-void dc_gwa_table_eta_cell(double eta, dc_gwa_table_eta *c);
+/* The eta cell at eta (clamped to the table's rows): the row j and
+   position ue, and the cubic Hermite weights at ue of a row's value, its
+   eta slope, the next row's value and slope. */
+static inline void dc_gwa_table_eta_cell(double eta, dc_gwa_table_eta *c)
+{
+  const double emax = DC_GWA_TABLE_ETA_LO + (double)(DC_GWA_TABLE_NETA - 1) / DC_GWA_TABLE_ETA_PER_UNIT;
+  const double de = 1.0 / DC_GWA_TABLE_ETA_PER_UNIT;
+  if (eta < DC_GWA_TABLE_ETA_LO) eta = DC_GWA_TABLE_ETA_LO;
+  if (eta > emax) eta = emax;
+  c->eta = eta;
+  double ue = (eta - DC_GWA_TABLE_ETA_LO) * DC_GWA_TABLE_ETA_PER_UNIT;
+  int j = (int)ue;
+  if (j > DC_GWA_TABLE_NETA - 2) j = DC_GWA_TABLE_NETA - 2;
+  ue -= j;
+  const double u2 = ue * ue, u3 = u2 * ue;
+  c->j = j;
+  c->ue = ue;
+  c->w[0] = 2 * u3 - 3 * u2 + 1;
+  c->w[1] = (u3 - 2 * u2 + ue) * de;
+  c->w[2] = -2 * u3 + 3 * u2;
+  c->w[3] = (u3 - u2) * de;
+}
 
 /* What a contact's relative radius R fixes, for dc_gwa_table_step_radius:
    a caller may keep it while R stays the same (monodisperse spheres, a
@@ -442,11 +462,17 @@ int dc_gwa_table_radius_init(const dc_gwa_table_pair *p, double R, dc_gwa_table_
 int dc_gwa_table_radius_init_elliptic(const dc_gwa_table_pair *p, double R_major, double R_minor,
                                       dc_gwa_table_radius *r);
 
+/* The circular table's G, dG/dx (dc_gwa_table_reduced) and the kink
+   term's C, dC/dx (dc_gwa_table_kink; 0 on loading) at (x, eta) on branch
+   b: what the correction reads at the end of its grid, given by the
+   caller (the step), so that the correction sits below the table. */
+typedef void (*dc_gwa_table_circle_fn)(int b, double x, double eta, double *G, double *Gx, double *C, double *Cx);
+
 /* The correction applied to the circular table's G, dG/dx at (x, eta) on
-   branch b, kc = C and dC/dx of dc_gwa_table_kink there (0 on loading):
-   used by the step. */
-void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc, double *G,
-                            double *Gx);
+   branch b, kc = C and dC/dx of dc_gwa_table_kink there (0 on loading);
+   below the grid (x < x_lo) it reads circle at x_lo: used by the step. */
+void dc_gwa_table_ell_apply(const dc_gwa_table_ell *e, int b, double x, double eta, const double *kc,
+                            dc_gwa_table_circle_fn circle, double *G, double *Gx);
 
 /* Per-contact history: gwa_touched, gwa_delta_max (no sign flips). */
 enum { DC_GWA_TABLE_HISTORY_NFIELDS = 2 };
