@@ -290,6 +290,7 @@ int dc_classical_hertz_collision(double Khz, double meff, double v0, dc_classica
   dc_classical_collision o;
   o.dmax = exp(0.4 * (log(1.25) + log(meff) + 2.0 * log(v0) - log(Khz)));
   o.Tc = 2.0 * I * o.dmax / v0;
+  if (!isfinite(o.Tc)) o.Tc = 2.0 * I * (o.dmax / v0);   /* 2 I delta_max overflowed */
   o.e = 1.0;
   o.Fmax = Khz * o.dmax * sqrt(o.dmax);
   o.dres = 0.0;

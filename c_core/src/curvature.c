@@ -191,6 +191,16 @@ int dc_superquadric_form(const double shape[3], const double blockiness[2], cons
 
 void dc_form_principal(const double form[3], double *k1, double *k2, double *theta)
 {
+  const int e = max_exponent(form, 3);
+  if (e < -900 && isfinite(form[0]) && isfinite(form[1]) && isfinite(form[2])) {
+    /* subnormal entries lose the smaller eigenvalue to rounding: the same
+       on the form scaled by 2^-e (exact), scaled back */
+    const double fs[3] = {ldexp(form[0], -e), ldexp(form[1], -e), ldexp(form[2], -e)};
+    dc_form_principal(fs, k1, k2, theta);
+    *k1 = ldexp(*k1, e);
+    *k2 = ldexp(*k2, e);
+    return;
+  }
   double mean = 0.5 * (form[0] + form[2]);
   double half = 0.5 * (form[0] - form[2]);
   if (!(isfinite(mean) && isfinite(half))) {   /* the sum overflows, the halves need not */
@@ -259,9 +269,11 @@ void dc_form_major_axis(const double form[3], const double u[3], const double v[
     return;
   }
   const int e = max_exponent(form, 3);
-  if (e > 500 || e < -500) {
-    /* the squares below would overflow or underflow: the same direction
-       from the form scaled by 2^-e (exact) */
+  if (e != 0) {
+    /* the squares below may overflow or underflow (those of a nearly
+       circular form's differences are far below its entries'): the same
+       direction from the form scaled by 2^-e (exact; in the normal range
+       the same bits) */
     const double fs[3] = {ldexp(form[0], -e), ldexp(form[1], -e), ldexp(form[2], -e)};
     dc_form_major_axis(fs, u, v, axis);
     return;

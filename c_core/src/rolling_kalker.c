@@ -688,9 +688,13 @@ static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *
   double fac_step = 1.0;
   if (step) {
     fac_step = dc_rolling_step_factor(step_ratio(step, rm->G, cc, V, &c));
-    Fx *= fac_step;
-    Fy *= fac_step;
-    Mz *= fac_step;
+    if (fac_step > 0.0) {
+      Fx *= fac_step;
+      Fy *= fac_step;
+      Mz *= fac_step;
+    } else {
+      Fx = Fy = Mz = 0.0;   /* the step ratio overflowed (an overflowed linear force too: no 0 x inf) */
+    }
   }
   double FL = sqrt(Fx * Fx + Fy * Fy);
   if (!(FL > 1e-150 && FL < 1e150)) FL = hypot(Fx, Fy);   /* squares under- or overflow */

@@ -127,7 +127,7 @@ public:
             stopParam(err, i, j);
           else if (!gwPlastic && roughness[i][j] != 0.0 &&
                    dc_gw_bound_material(Yeff[i][j], n_asp[i][j], roughness[i][j], &sphereBound[i * (ntypes + 1) + j]) != DC_OK)
-            sphereBound[i * (ntypes + 1) + j].sigma = 0.0;   /* 1/sigma leaves the doubles: the checked form */
+            sphereBound[i * (ntypes + 1) + j].sigma = 0.0;   /* 1/sigma or n_asp E* leaves the normal doubles: the checked form */
       if (gwPlastic)
         plasticParams(registry, caller, plasticity, &dc_gw_plastic_default_params, &dc_gw_plastic_check, plastic);
       return;

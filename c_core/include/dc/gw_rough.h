@@ -87,7 +87,8 @@ int dc_gw_bound_material(double Estar, double n_asp, double sigma, dc_gw_bound *
 
 /* Binds geometry g to b (from dc_gw_bound_material or dc_gw_bound_init):
    the same bits as dc_gw_bound_init(g, ...) of b's material. DC_ERANGE
-   when cF or ck is not a finite normal number: then they are set to
+   when cF, ck or the material's n_asp E* products are not finite normal
+   numbers: then cF and ck are set to
    +inf, so that dc_gw_bound_force takes dc_gw_rough_elliptic's checked
    form at every overlap. g is stored either way. */
 static inline int dc_gw_bound_bind(dc_gw_bound *b, const dc_hertz_geom *g)
@@ -97,7 +98,8 @@ static inline int dc_gw_bound_bind(dc_gw_bound *b, const dc_hertz_geom *g)
   b->g = *g;
   b->cF = b->kF * sRc * b->sigma * b->ss * g->gamma;
   b->ck = b->kk * sRc * b->ss * g->gamma;
-  if (isnormal(b->cF) && isnormal(b->ck)) return DC_OK;
+  /* (a subnormal n_asp E* product carries too few bits into cF and ck) */
+  if (isnormal(b->cF) && isnormal(b->ck) && isnormal(b->kF) && isnormal(b->kk)) return DC_OK;
   b->cF = b->ck = HUGE_VAL;
   return DC_ERANGE;
 }
