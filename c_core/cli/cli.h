@@ -25,7 +25,7 @@ void dc_cli_list(FILE *out);
 /* dclaw plot (plot.c): runs law subcommands and draws their tables with
    python3 and matplotlib (plot.py); argv[0] is "plot". */
 #define DC_CLI_PLOT_USAGE \
-  "plot --png FILE [--y force|area|stiffness|all] [--csv FILE] -- <law> [--key value ...] [-- <law> ...]"
+  "plot --png FILE [--y force|area|stiffness|tangential|creep|all] [--csv FILE] -- <law> [--key value ...] [-- <law> ...]"
 int dc_cli_plot(int argc, char **argv);
 
 /* Key-value options: --key value. Unknown keys are an error. */

@@ -1,6 +1,7 @@
 /* dclaw plot: runs one or more law subcommands, collects their CSV tables
    and hands them to the plotting script (plot.py, python3 with matplotlib),
-   which draws force, area and stiffness against overlap into a PNG. */
+   which draws force, area and stiffness against overlap (the tangential
+   force against displacement, the creep force against creepage) into a PNG. */
 #include "cli.h"
 #include <errno.h>
 #include <stdio.h>
@@ -21,11 +22,12 @@ static void usage(FILE *out)
   fprintf(out,
           "usage: dclaw " DC_CLI_PLOT_USAGE "\n"
           "Draws the tables the laws print (as dclaw <law> [--key value ...] would) against the overlap delta\n"
-          "into a PNG: one curve per law and force, area or stiffness column, the legend naming the law and\n"
-          "its keys; several laws share the axes.\n"
+          "(cmd_tangential: the displacement u, kalker: the creepage xi) into a PNG: one curve per law and\n"
+          "quantity column, the legend naming the law and its keys; several laws share the axes.\n"
           "  --png FILE  the PNG to write\n"
-          "  --y Q       force, area or stiffness (one panel), or all (three panels, the default)\n"
-          "  --csv FILE  also write the plotted series: label,column,delta,value\n"
+          "  --y Q       force, area, stiffness, tangential (Ft) or creep (Fx) (one panel), or all (a panel\n"
+          "              per quantity the tables have, the default)\n"
+          "  --csv FILE  also write the plotted series: label,column,<delta, u or xi>,value\n"
           "Runs $DCLAW_PYTHON (default %s), which needs matplotlib (Debian package\n"
           "python3-matplotlib), on $DCLAW_PLOT_SCRIPT (default %s).\n",
           DC_PLOT_PYTHON, DC_PLOT_SCRIPT);
@@ -93,8 +95,9 @@ int dc_cli_plot(int argc, char **argv)
     fprintf(stderr, "dclaw plot: --png FILE is missing\nusage: dclaw " DC_CLI_PLOT_USAGE "\n");
     return 2;
   }
-  if (strcmp(y, "force") && strcmp(y, "area") && strcmp(y, "stiffness") && strcmp(y, "all")) {
-    fprintf(stderr, "dclaw plot: --y '%s': must be force, area, stiffness or all\n", y);
+  if (strcmp(y, "force") && strcmp(y, "area") && strcmp(y, "stiffness") && strcmp(y, "tangential") &&
+      strcmp(y, "creep") && strcmp(y, "all")) {
+    fprintf(stderr, "dclaw plot: --y '%s': must be force, area, stiffness, tangential, creep or all\n", y);
     return 2;
   }
   if (i >= argc) {

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
-"""Draws dclaw tables against overlap into a PNG; `dclaw plot` (plot.c) runs
+"""Draws dclaw tables against overlap (or displacement, creepage) into a PNG; `dclaw plot` (plot.c) runs
 it with, on stdin, for each law a line '# <law> <keys>' and then the CSV table
 `dclaw <law> <keys>` prints.
 
 A curve is a column named after its quantity, alone or with a suffix naming
-the variant (gw_rough: force_feng_table), drawn against the column delta in
-row order (jamari_ep's load-unload-reload cycle stays a cycle). Each curve
+the variant (gw_rough: force_feng_table), drawn against the column delta
+(cmd_tangential: u, kalker: xi) in row order (jamari_ep's load-unload-reload
+cycle and cmd_tangential's loop stay cycles). Each curve
 keeps its colour in every panel and its law's line style; the legend names
 the law, its keys and the variant."""
 import argparse
@@ -19,7 +20,12 @@ QUANTITIES = {
     "force": (("force",), "normal force F [N]"),
     "area": (("area",), "contact area A [m$^2$]"),
     "stiffness": (("stiffness", "kn"), r"normal stiffness dF/d$\delta$ [N/m]"),
+    "tangential": (("Ft",), "tangential force F$_t$ [N]"),
+    "creep": (("Fx",), "longitudinal creep force F$_x$ [N]"),
 }
+# the column a table is drawn against (the first its header has), and its axis label
+X_COLUMNS = (("delta", r"overlap $\delta$ [m]"), ("u", "tangential displacement u [m]"),
+             ("xi", r"longitudinal creepage $\xi$ [-]"))
 LINE_STYLES = ("-", "--", ":", "-.")
 # one column of one law's table against its delta column; law is the law's index
 Curve = collections.namedtuple("Curve", "quantity label column x y law")
@@ -54,13 +60,24 @@ def variant(column, names):
     return None
 
 
+def x_column(law, header):
+    """The column a table is drawn against."""
+    for name, _ in X_COLUMNS:
+        if name in header:
+            return name
+    fail("%s: its table has no %s column to plot against (%s)" % (law, ", ".join(n for n, _ in X_COLUMNS),
+                                                                   ",".join(header)))
+
+
 def curves(tables, quantities):
-    """The Curves of quantities in the tables."""
-    out = []
+    """The Curves of quantities in the tables, and the column they are drawn against."""
+    out, xs = [], set()
     for index, (law, header, rows) in enumerate(tables):
-        if "delta" not in header:
-            fail("%s: its table has no delta column to plot against (%s)" % (law, ",".join(header)))
-        x = [r[header.index("delta")] for r in rows]
+        xname = x_column(law, header)
+        xs.add(xname)
+        if len(xs) > 1:
+            fail("the laws' tables are drawn against different columns (%s): plot them apart" % ", ".join(sorted(xs)))
+        x = [r[header.index(xname)] for r in rows]
         found = 0
         for q in quantities:
             for j, column in enumerate(header):
@@ -71,7 +88,7 @@ def curves(tables, quantities):
                     found += 1
         if not found:
             fail("%s: its table has no %s column (%s)" % (law, " or ".join(quantities), ",".join(header)))
-    return out
+    return out, xs.pop()
 
 
 def load_pyplot():
@@ -85,9 +102,10 @@ def load_pyplot():
     return plt
 
 
-def draw(plt, series, quantities):
-    """The figure, one panel per quantity sharing the overlap axis and one
-    legend below, and [(label, column, line)] of the lines drawn."""
+def draw(plt, series, quantities, xname):
+    """The figure, one panel per quantity drawn sharing the axis of column
+    xname and one legend below, and [(label, column, line)] of the lines."""
+    quantities = [q for q in quantities if any(c.quantity == q for c in series)]
     fig, axes = plt.subplots(len(quantities), 1, sharex=True, squeeze=False, figsize=(7.5, 0.8 + 2.6 * len(quantities)))
     colours, drawn = {}, []
     for ax, q in zip(axes[:, 0], quantities):
@@ -99,7 +117,7 @@ def draw(plt, series, quantities):
                 drawn.append((c.label, c.column, line))
         ax.set_ylabel(QUANTITIES[q][1])
         ax.grid(True, alpha=0.3)
-    axes[-1, 0].set_xlabel(r"overlap $\delta$ [m]")
+    axes[-1, 0].set_xlabel(dict(X_COLUMNS)[xname])
     handles = {}
     for label, _, line in drawn:
         handles.setdefault(label, line)
@@ -108,11 +126,11 @@ def draw(plt, series, quantities):
     return fig, drawn
 
 
-def write_csv(path, drawn):
-    """The data of the lines drawn, as label,column,delta,value rows."""
+def write_csv(path, drawn, xname):
+    """The data of the lines drawn, as label,column,<x column>,value rows."""
     with open(path, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["label", "column", "delta", "value"])
+        w.writerow(["label", "column", xname, "value"])
         for label, column, line in drawn:
             w.writerows([label, column, repr(float(x)), repr(float(y))] for x, y in zip(line.get_xdata(), line.get_ydata()))
 
@@ -133,9 +151,10 @@ def main():
     a = p.parse_args()
     quantities = list(QUANTITIES) if a.y == "all" else [a.y]
     plt = load_pyplot()
-    fig, drawn = draw(plt, curves(read_tables(sys.stdin), quantities), quantities)
+    series, xname = curves(read_tables(sys.stdin), quantities)
+    fig, drawn = draw(plt, series, quantities, xname)
     if a.csv:
-        written(a.csv, lambda path: write_csv(path, drawn))
+        written(a.csv, lambda path: write_csv(path, drawn, xname))
     written(a.png, lambda path: fig.savefig(path, format="png", dpi=100, bbox_inches="tight"))
 
 

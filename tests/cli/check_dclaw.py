@@ -4,7 +4,10 @@
 Inputs that made dclaw print inf or nan with exit 0, and option values that
 are not numbers or not valid counts, must exit 2 with a message naming the
 key; good inputs must exit 0 with finite CSV; spherical Hertz and JKR rows
-must match the closed forms computed here."""
+must match the closed forms computed here; cmd_tangential's loop and
+energy per cycle the Mindlin-Deresiewicz branches and the generator's
+Eq. 69; kalker's coefficients the generator's, its forces Kalker's linear
+law, its bound and the Vermeulen-Johnson saturation."""
 import math
 import os
 import shlex
@@ -82,6 +85,11 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("jamari_ep", "cA", "--cA 1.5"), ("jamari_ep", "ch", "--ch 0.1"), ("jamari_ep", "H", "--H 0"),
     ("jamari_ep", "nu", "--nu -2"), ("jamari_ep", "Kv", "--Kv 0"), ("jamari_ep", "peak", "--peak 0"),
     ("jamari_ep", "Estar", "--Estar 1e-300 --H 1e300"),
+    ("cmd_tangential", "r", "--r 2"), ("cmd_tangential", "r", "--r 0"), ("cmd_tangential", "mu", "--mu -1"),
+    ("cmd_tangential", "Fn", "--Fn 0"), ("cmd_tangential", "nu", "--nu 0.7"), ("cmd_tangential", "u", "--u -1e-6"),
+    ("cmd_tangential", "steps", "--steps 0"),
+    ("kalker", "b", "--a 1e-3 --b 2e-3"), ("kalker", "model", "--model 3"), ("kalker", "nu", "--nu 0.7"),
+    ("kalker", "mu", "--mu -1"), ("kalker", "V", "--V 0"), ("kalker", "Fb", "--Fb -1"),
 ]]
 
 
@@ -108,6 +116,8 @@ GOOD = [
     "jkr_elliptic --summary 1 --n 1000000", "gw_rough --n 1e1",
     "jamari_ep", "jamari_ep --summary 1", "jamari_ep --R1 0.002 --R2 0.0005 --nu 0 --peak 300 --n 50",
     "jamari_ep --cA 2 --ch 1.2 --R1 0.004 --R2 0.001 --n 7", "jamari_ep --delta_peak 1e300 --n 3",
+    "cmd_tangential", "cmd_tangential --summary 1", "cmd_tangential --r 1 --n 5", "cmd_tangential --u 1e-4 --n 5",
+    "kalker", "kalker --a 3e-3 --b 1e-3 --alpha 30 --eta 1e-3 --phi 2 --model 0", "kalker --xi_max 1 --n 101",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -162,5 +172,68 @@ rc, out, _ = run(base + ["--summary", "1", "--peak", "30"])
 head, rows = csv(out)
 got = dict(zip(head, rows[0]))
 check(rc == 0 and 0 < got["delta_res"] < got["delta_peak"] and got["energy"] > 0, "plastic cycle: %r" % got)
+
+# cmd_tangential, a circle at constant Fn: the branches of Mindlin-Deresiewicz
+# (review Eqs. 59, 67, computed here) along the loop 0 -> u* -> -u* -> u*,
+# with delta_L = 3 mu Fn / (2 k0); the energy per cycle against the
+# generator's Eq. 69 (tests/reference/cmd_tangential.csv, rows energy:
+# k0 E / (mu Fn)^2 at r = F*/(mu Fn)).
+REF = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "reference", "cmd_tangential.csv")
+energy69 = {float(l.split(",")[1]): float(l.split(",")[2]) for l in open(REF) if l.startswith("energy,")}
+for r in sorted(energy69):
+    args = ["cmd_tangential", "--R", "2e-3", "--E", "5e9", "--nu", "0.25", "--Fn", "3", "--mu", "0.4", "--r", repr(r)]
+    rc, out, _ = run(args + ["--summary", "1", "--steps", "2000"])
+    head, rows = csv(out)
+    got = dict(zip(head, rows[0]))
+    k0, muF, dL, us = got["k0"], got["mu_Fn"], got["delta_slip"], got["u_amp"]
+    check(rc == 0 and abs(dL / (1.5 * muF / k0) - 1) < 1e-14 and abs(got["F_amp"] / (r * muF) - 1) < 1e-12,
+          "cmd_tangential r %g: slip displacement %r, amplitude force %r" % (r, dL, got["F_amp"]))
+    E_norm = got["energy"] * k0 / muF ** 2
+    # (the printed Eq. 69 takes F* from the law, r to 1e-12, and Eq. 69 goes as r^3 with cancellation at small r)
+    check(abs(E_norm / energy69[r] - 1) < 1e-6 and abs(got["energy_eq69"] * k0 / muF ** 2 / energy69[r] - 1) < 1e-10,
+          "cmd_tangential r %g: energy per cycle (trapezoid, 2000 x 11 steps a half cycle) k0 E/(mu Fn)^2 %r, "
+          "printed Eq. 69 %r, reference %r" % (r, E_norm, got["energy_eq69"] * k0 / muF ** 2, energy69[r]))
+    rc, out, _ = run(args + ["--n", "9"])
+    head, rows = csv(out)
+    virgin = lambda u: muF * (1 - (1 - u / dL) ** 1.5)
+    Fs = virgin(us)
+    worst = 0.0
+    for leg, u, F, stick, kt in rows:
+        want = virgin(u) if leg == 0 else (Fs - 2 * virgin((us - u) / 2) if leg == 1 else -Fs + 2 * virgin((u + us) / 2))
+        worst = max(worst, abs(F - want) / muF)
+    check(rc == 0 and len(rows) == 27 and worst < 1e-12,
+          "cmd_tangential r %g: virgin, unloading and reloading branches within %.2g mu Fn of Eqs. 59, 67" % (r, worst))
+
+# kalker: the circle's coefficients against the generator's (kalker.csv,
+# a/b = 1, nu = 0.25); Kalker's linear force F_x = -G c^2 c11 xi (G =
+# E / (2 (1 + nu)), c^2 = a b) below saturation; the linear law bounded at
+# mu Fb; Vermeulen-Johnson F_L [1 - (1 - beta/3)^3] / beta, beta = |F_L| / (mu Fb).
+KREF = os.path.join(os.path.dirname(REF), "kalker.csv")
+c_ref = next([float(x) for x in l.split(",")[3:7]] for l in open(KREF)
+             if l.startswith("node,1,") and abs(float(l.split(",")[2]) - 0.25) < 1e-15)
+Ek, nuk, ak, muk, Fbk = 2.1e11, 0.25, 2e-3, 0.3, 1e4
+Gk = Ek / (2 * (1 + nuk))
+base = ["kalker", "--a", repr(ak), "--b", repr(ak), "--E", repr(Ek), "--nu", repr(nuk), "--mu", repr(muk), "--Fb", repr(Fbk)]
+rc, out, _ = run(base + ["--model", "0", "--xi_min", "0", "--xi_max", "1e-5", "--n", "3"])
+head, rows = csv(out)
+row = dict(zip(head, rows[-1]))
+check(rc == 0 and all(abs(row[c] / want - 1) < 1e-9 for c, want in zip(("c11", "c22", "c23", "c33"), c_ref)),
+      "kalker circle nu 0.25: coefficients %r, generator %r" % ([row[c] for c in ("c11", "c22", "c23", "c33")], c_ref))
+FL = -Gk * ak * ak * row["c11"] * row["xi"]
+check(abs(row["Fx"] / FL - 1) < 1e-13 and row["Fy"] == 0 and row["Mz"] == 0,
+      "kalker linear F_x %r, want -G c^2 c11 xi = %r" % (row["Fx"], FL))
+rc, out, _ = run(base + ["--model", "0", "--xi_min", "0.01", "--xi_max", "0.1", "--n", "3"])
+head, rows = csv(out)
+check(rc == 0 and all(abs(abs(r[3]) / (muk * Fbk) - 1) < 1e-14 and r[6] == 1 for r in rows),
+      "kalker linear law beyond saturation: |F| = mu Fb (%r)" % [r[3] for r in rows])
+rc, out, _ = run(base + ["--model", "1", "--xi_min", "1e-4", "--xi_max", "1e-3", "--n", "4"])
+head, rows = csv(out)
+worst = 0.0
+for r in rows:
+    xi, FLx = r[0], -Gk * ak * ak * r[7] * r[0]
+    beta = abs(FLx) / (muk * Fbk)
+    want = FLx * (1 - (1 - beta / 3) ** 3) / beta if beta < 3 else -muk * Fbk
+    worst = max(worst, abs(r[3] / want - 1))
+check(rc == 0 and worst < 1e-13, "kalker Vermeulen-Johnson: F_x within %.2g of F_L [1 - (1 - beta/3)^3]/beta" % worst)
 
 finish()

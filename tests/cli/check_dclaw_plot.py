@@ -186,6 +186,28 @@ with tempfile.TemporaryDirectory() as tmp:
         check(w == w_all and 250 <= h < h_all / 2 and coloured(pixels) > 1000,
               "--y %s: %d x %d pixels (all: %d x %d), %d coloured" % (q, w, h, w_all, h_all, coloured(pixels)))
 
+    # the tangential laws: cmd_tangential's loop against the displacement u,
+    # kalker's creep force against the creepage xi (two creep models); the
+    # series are the printed columns
+    for laws, q, x in ((["cmd_tangential --r 0.9 --n 15"], "tangential", "u"),
+                       (["kalker --xi_max 0.005 --n 20", "kalker --xi_max 0.005 --n 20 --model 0"], "creep", "xi")):
+        png, data = os.path.join(tmp, q + ".png"), os.path.join(tmp, q + ".csv")
+        rc, out, err = run(plot_args(png, laws, "--csv", data))
+        col = "Ft" if q == "tangential" else "Fx"
+        ok = rc == 0 and os.path.exists(data)
+        if ok:
+            with open(data) as f:
+                plotted = list(csv.DictReader(f))
+            for law in laws:
+                printed, _ = table(law.split())
+                got = [r for r in plotted if r["label"] == law and r["column"] == col]
+                ok &= [float(r[x]) for r in got] == printed[x] and [float(r["value"]) for r in got] == printed[col]
+        w, h, pixels = image(png, q)
+        check(ok and coloured(pixels) > 1000, "%s: %s plotted against %s as printed (exit %d, stderr %r)"
+              % (" and ".join(laws), col, x, rc, err))
+    rc, _, err = run(plot_args(os.path.join(tmp, "mixed.png"), ["kalker", "cmd_tangential"]))
+    check(rc == 2 and "drawn against different columns" in err, "kalker with cmd_tangential: exit %d, %r" % (rc, err))
+
     # a file not named .png is still a PNG
     png = os.path.join(tmp, "plot.pdf")
     rc, _, err = run(plot_args(png, [LAWS[0][0]], "--y", "force"))
@@ -201,12 +223,12 @@ with tempfile.TemporaryDirectory() as tmp:
         ("plot --png %s -- %s --" % (png, law), {}, "no law after '--'"),
         ("plot --png %s -- nolaw --R1 1" % png, {}, "unknown law 'nolaw'"),
         ("plot --png %s -- %s -- nolaw" % (png, law), {}, "unknown law 'nolaw'"),
-        ("plot --png %s --y energy -- %s" % (png, law), {}, "--y 'energy': must be force, area, stiffness or all"),
+        ("plot --png %s --y energy -- %s" % (png, law), {}, "--y 'energy': must be force, area, stiffness, tangential, creep or all"),
         ("plot --png %s --x delta -- %s" % (png, law), {}, "unknown option '--x'"),
         ("plot --png %s --y" % png, {}, "--y needs a value"),
         ("plot --png %s -- hertz_elliptic --R1 abc" % png, {}, "--R1: 'abc' is not a finite number"),
         ("plot --png %s -- %s -- gw_rough --sigma 1e300 --n 3" % (png, law), {}, "dclaw gw_rough: --Estar, --sigma"),
-        ("plot --png %s -- jkr_elliptic --summary 1" % png, {}, "jkr_elliptic --summary 1: its table has no delta column"),
+        ("plot --png %s -- jkr_elliptic --summary 1" % png, {}, "jkr_elliptic --summary 1: its table has no delta, u, xi column"),
         ("plot --png %s -- %s" % (os.path.join(tmp, "no", "dir.png"), law), {}, "cannot write %s" % os.path.join(tmp, "no", "dir.png")),
         ("plot --png %s --csv %s -- %s" % (png, os.path.join(tmp, "no", "dir.csv"), law), {}, "cannot write"),
         ("plot --png %s -- %s" % (png, law), {"DCLAW_PYTHON": os.path.join(tmp, "python3")}, "python3-matplotlib"),
