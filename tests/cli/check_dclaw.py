@@ -7,7 +7,8 @@ key; good inputs must exit 0 with finite CSV; spherical Hertz and JKR rows
 must match the closed forms computed here; cmd_tangential's loop and
 energy per cycle the Mindlin-Deresiewicz branches and the generator's
 Eq. 69; kalker's coefficients the generator's, its forces Kalker's linear
-law, its bound and the Vermeulen-Johnson saturation."""
+law, its bound and the Vermeulen-Johnson saturation; classical's
+integrated collisions the generator's collision figures."""
 import math
 import os
 import shlex
@@ -90,6 +91,8 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("cmd_tangential", "steps", "--steps 0"),
     ("kalker", "b", "--a 1e-3 --b 2e-3"), ("kalker", "model", "--model 3"), ("kalker", "nu", "--nu 0.7"),
     ("kalker", "mu", "--mu -1"), ("kalker", "V", "--V 0"), ("kalker", "Fb", "--Fb -1"),
+    ("classical", "law", "--law 1.5"), ("classical", "e", "--law 1 --damping 0 --e 2"), ("classical", "meff", "--meff 0"),
+    ("classical", "steps", "--steps 0"),
 ]]
 
 
@@ -118,6 +121,8 @@ GOOD = [
     "jamari_ep --cA 2 --ch 1.2 --R1 0.004 --R2 0.001 --n 7", "jamari_ep --delta_peak 1e300 --n 3",
     "cmd_tangential", "cmd_tangential --summary 1", "cmd_tangential --r 1 --n 5", "cmd_tangential --u 1e-4 --n 5",
     "kalker", "kalker --a 3e-3 --b 1e-3 --alpha 30 --eta 1e-3 --phi 2 --model 0", "kalker --xi_max 1 --n 101",
+    "classical", "classical --summary 1", "classical --law 1 --damping 0 --e 0.3 --n 7",
+    "classical --law 3 --stiffness 3 --S 1000 --summary 1", "classical --law 2 --stiffness 1 --e 0.4",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -235,5 +240,43 @@ for r in rows:
     want = FLx * (1 - (1 - beta / 3) ** 3) / beta if beta < 3 else -muk * Fbk
     worst = max(worst, abs(r[3] / want - 1))
 check(rc == 0 and worst < 1e-13, "kalker Vermeulen-Johnson: F_x within %.2g of F_L [1 - (1 - beta/3)^3]/beta" % worst)
+
+# classical: one collision integrated (velocity Verlet, 20000 steps per
+# elastic duration) against the generator's collision figures
+# (tests/reference/classical.csv: lsd, hls, and the elastic Hertz duration
+# and overlap of the match rows), within 1e-3 (the step's resolution of
+# the moment the bodies part is 5e-5 of the duration).
+CREF = os.path.join(os.path.dirname(REF), "classical.csv")
+crow = lambda tag: [[float(x) for x in l.split(",")[1:]] for l in open(CREF) if l.startswith(tag + ",")]
+near = lambda got, want: abs(got / want - 1) < 1e-3 if want else abs(got) < 1e-12
+
+
+def collision(*args):
+    rc, out, err = run(["classical", "--summary", "1"] + [str(a) for a in args])
+    head, rows = csv(out) if rc == 0 else ([], [[]])
+    return rc, dict(zip(head, rows[0])), err
+
+
+worst = 0
+for e, v, mm, K, limit, eta, Tc, dmax, e_out in crow("lsd"):
+    rc, got, err = collision("--law", 0, "--kn", repr(K), "--e", repr(e), "--meff", repr(mm), "--v0", repr(v),
+                             "--limit", int(limit))
+    ok = rc == 0 and near(got["delta_max"], dmax) and near(got["e"], e_out) and (limit or near(got["Tc"], Tc))
+    check(ok, "classical lsd e %g limit %d: Tc %r, delta_max %r, e %r; reference %r, %r, %r (%s)"
+          % (e, limit, got.get("Tc"), got.get("delta_max"), got.get("e"), Tc, dmax, e_out, err.strip()))
+for law, KL, x, mm, v, Tc, dmax, dres, Fmax, e_out in crow("hls"):
+    key = "--e" if law == 2 else "--S"
+    rc, got, err = collision("--law", int(law), "--kn", repr(KL), key, repr(x), "--meff", repr(mm), "--v0", repr(v))
+    # (delta_res to 1e-3 of delta_max: the step that finds the force gone moves delta by v dt ~ 2e-4 delta_max)
+    ok = rc == 0 and all(near(got[k], w) for k, w in (("delta_max", dmax), ("F_max", Fmax), ("e", e_out))) and \
+        abs(got["delta_res"] - dres) <= 1e-3 * dmax
+    check(ok, "classical hls law %d x %g v %g: delta_max %r, delta_res %r, F_max %r, e %r; reference %r, %r, %r, %r"
+          % (law, x, v, got.get("delta_max"), got.get("delta_res"), got.get("F_max"), got.get("e"), dmax, dres, Fmax, e_out))
+for row in crow("match")[:3]:
+    Es, Rr, mm, v, Tch, dmh = row[3], row[4], row[5], row[6], row[8], row[9]
+    rc, got, err = collision("--law", 1, "--damping", 4, "--Estar", repr(Es), "--R", repr(Rr), "--meff", repr(mm),
+                             "--v0", repr(v))
+    check(rc == 0 and near(got["Tc"], Tch) and near(got["delta_max"], dmh) and near(got["e"], 1.0),
+          "classical elastic hertz: Tc %r, delta_max %r; reference %r, %r" % (got.get("Tc"), got.get("delta_max"), Tch, dmh))
 
 finish()
