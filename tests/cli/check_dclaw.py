@@ -8,7 +8,8 @@ must match the closed forms computed here; cmd_tangential's loop and
 energy per cycle the Mindlin-Deresiewicz branches and the generator's
 Eq. 69; kalker's coefficients the generator's, its forces Kalker's linear
 law, its bound and the Vermeulen-Johnson saturation; classical's
-integrated collisions the generator's collision figures."""
+integrated collisions the generator's collision figures; gw_adhesion's
+table path the exact law on its branch."""
 import math
 import os
 import shlex
@@ -93,6 +94,8 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("kalker", "mu", "--mu -1"), ("kalker", "V", "--V 0"), ("kalker", "Fb", "--Fb -1"),
     ("classical", "law", "--law 1.5"), ("classical", "e", "--law 1 --damping 0 --e 2"), ("classical", "meff", "--meff 0"),
     ("classical", "steps", "--steps 0"),
+    ("gw_adhesion", "w", "--w -1"), ("gw_adhesion", "sigma", "--sigma 0"), ("gw_adhesion", "R", "--R 0"),
+    ("gw_adhesion", "delta_min", "--delta_min 1e-6 --delta_max 1e-7"),
 ]]
 
 
@@ -123,6 +126,7 @@ GOOD = [
     "kalker", "kalker --a 3e-3 --b 1e-3 --alpha 30 --eta 1e-3 --phi 2 --model 0", "kalker --xi_max 1 --n 101",
     "classical", "classical --summary 1", "classical --law 1 --damping 0 --e 0.3 --n 7",
     "classical --law 3 --stiffness 3 --S 1000 --summary 1", "classical --law 2 --stiffness 1 --e 0.4",
+    "gw_adhesion", "gw_adhesion --w 0 --n 5", "gw_adhesion --steps 1 --n 50",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -278,5 +282,31 @@ for row in crow("match")[:3]:
                              "--v0", repr(v))
     check(rc == 0 and near(got["Tc"], Tch) and near(got["delta_max"], dmh) and near(got["e"], 1.0),
           "classical elastic hertz: Tc %r, delta_max %r; reference %r, %r" % (got.get("Tc"), got.get("delta_max"), Tch, dmh))
+
+# gw_adhesion: along an approach-retraction path the table (what the LIGGGHTS
+# model computes) against the exact law on its branch (dc_gw_rough_adhesive,
+# the summits' JKR solutions) within the table's target, 1e-4 of the force
+# plus 1e-10 of n_asp 8 w R (doc/gw_adhesion.md); the loading branch on
+# approach, the unloading one on retraction, pulling harder (hysteresis).
+Ra, Ea, sa, Na, wa = 1e-3, 1e9, 1e-7, 1e4, 0.05
+rc, out, err = run(["gw_adhesion", "--R", repr(Ra), "--Estar", repr(Ea), "--sigma", repr(sa), "--n_asp", repr(Na),
+                    "--w", repr(wa), "--delta_min", "-6e-7", "--delta_max", "3e-7", "--n", "31"])
+head, rows = csv(out) if rc == 0 else ([], [])
+col = {h: i for i, h in enumerate(head)}
+worst, compared = 0.0, 0
+for r in rows:
+    if r[col["exact_branch"]] >= 0:
+        bound = 1e-4 * abs(r[col["force_exact"]]) + 1e-10 * Na * 8 * wa * Ra
+        worst = max(worst, abs(r[col["force"]] - r[col["force_exact"]]) / bound)
+        compared += 1
+check(rc == 0 and compared >= 50 and worst <= 1.0,
+      "gw_adhesion: %d rows on one branch within %.2g of the table's target against the exact law (%s)"
+      % (compared, worst, err.strip()))
+app = {round(r[1], 15): r for r in rows if r[0] == 0}
+ret = {round(r[1], 15): r for r in rows if r[0] == 1}
+both = [d for d in app if d in ret and -3e-7 < d < 2e-7]
+check(all(app[d][col["weight"]] == 0 for d in app) and both and
+      all(ret[d][col["weight"]] > 0 and ret[d][col["force"]] < app[d][col["force"]] for d in both),
+      "gw_adhesion: loading on approach, unloading on retraction pulling harder at %d overlaps" % len(both))
 
 finish()
