@@ -4,11 +4,13 @@
    law (Feng Eq. 75) in its table and fitted variants and the law tabulated
    from the full GW solver (dc/gw_rough_table.h); with --w > 0 also the
    GW force with adhesive JKR summits on loading and unloading
-   (dc/gw_rough_adhesive.h). */
+   (dc/gw_rough_adhesive.h); with --H > 0 also the GW force of
+   elastic-plastic summits (dc/gw_rough_plastic.h, the deck's gwPlastic on). */
 #include "cli.h"
 #include "dc/feng_rough.h"
 #include "dc/gw_rough.h"
 #include "dc/gw_rough_adhesive.h"
+#include "dc/gw_rough_plastic.h"
 #include "dc/gw_rough_table.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/status.h"
@@ -31,8 +33,11 @@ static int cmd_gw_rough(int argc, char **argv)
     {"delta_max", "last overlap [m]", 1e-5, 0},
     {"n", DC_CLI_N_HELP, 14, 0},
     {"w", "work of adhesion [J/m^2]; > 0 adds the adhesive (JKR summit) GW force, loading and unloading", 0, 0},
+    {"H", "hardness of the softer body [Pa]; > 0 adds the GW force of elastic-plastic summits (deck: gwPlastic on)", 0, 0},
+    {"nu", "Poisson's ratio of the softer body, for the plastic summits' default plasticityKv", 0.3, 0},
     {0, 0, 0, 0}};
-  int st = dc_cli_parse(argc, argv, o, "--R1 R --R2 R --Estar E --sigma s --n_asp N --mu mu --delta_min d --delta_max d --n N [--w w]");
+  int st = dc_cli_parse(argc, argv, o,
+                        "--R1 R --R2 R --Estar E --sigma s --n_asp N --mu mu --delta_min d --delta_max d --n N [--w w] [--H H --nu nu]");
   if (st) return st == 1 ? 0 : st;
   int n;
   if (dc_cli_count(argv[0], o, "n", &n)) return 2;
@@ -59,8 +64,22 @@ static int cmd_gw_rough(int argc, char **argv)
             dc_status_str(w >= 0 ? st : DC_EDOM), DC_JKR_RATIO_MIN);
     return 2;
   }
-  const char *cols = w > 0 ? COLUMNS ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading"
-                           : COLUMNS;
+  const double H = dc_cli_get(o, "H");
+  dc_gw_plastic_params pp = dc_gw_plastic_default_params(H, dc_cli_get(o, "nu"));
+  dc_param_error perr;
+  const double nu = dc_cli_get(o, "nu");
+  if (H != 0.0 && !(nu >= -1.0 && nu <= 0.5)) {
+    fprintf(stderr, "dclaw gw_rough: --nu: %g is outside [-1, 0.5]\n", nu);
+    return 2;
+  }
+  if (H != 0.0 && dc_gw_plastic_check(&pp, &perr) != DC_OK) {
+    fprintf(stderr, "dclaw gw_rough: --H, --nu: %s = %g is outside %s\n", perr.name, perr.value, perr.range);
+    return 2;
+  }
+  char cols[512];
+  snprintf(cols, sizeof cols, "%s%s%s", COLUMNS,
+           w > 0 ? ",force_adhesive_loading,area_adhesive_loading,force_adhesive_unloading,area_adhesive_unloading" : "",
+           H > 0 ? ",force_gw_plastic,area_gw_plastic,kn_gw_plastic" : "");
   printf("%s\n", cols);
   for (int i = 0; i < n; i++) {
     const double d = dc_cli_range(d0, d1, i, n);
@@ -75,8 +94,20 @@ static int cmd_gw_rough(int argc, char **argv)
               w > 0 ? ", --w" : "", dc_status_str(st), d);
       return 2;
     }
-    const double v[] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, pg, kg, al.F, al.area, au.F, au.area};
-    if (dc_cli_row("gw_rough", o, cols, w > 0 ? 15 : 11, v)) return 2;
+    dc_gw_rough_state ps = {0};
+    if (H > 0 && (st = dc_gw_rough_plastic(&g, E, &pp, N, s, d, &ps))) {
+      fprintf(stderr, "dclaw gw_rough: --H, --Estar, --sigma, --n_asp: %s at delta %g\n", dc_status_str(st), d);
+      return 2;
+    }
+    double v[18] = {d, rs.h, rs.F, rs.area, rs.kn, pt, kt, pf, kf, pg, kg};
+    int nv = 11;
+    if (w > 0) {
+      v[nv++] = al.F; v[nv++] = al.area; v[nv++] = au.F; v[nv++] = au.area;
+    }
+    if (H > 0) {
+      v[nv++] = ps.F; v[nv++] = ps.area; v[nv++] = ps.kn;
+    }
+    if (dc_cli_row("gw_rough", o, cols, nv, v)) return 2;
   }
   return 0;
 }

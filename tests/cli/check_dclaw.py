@@ -96,6 +96,7 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("classical", "steps", "--steps 0"),
     ("gw_adhesion", "w", "--w -1"), ("gw_adhesion", "sigma", "--sigma 0"), ("gw_adhesion", "R", "--R 0"),
     ("gw_adhesion", "delta_min", "--delta_min 1e-6 --delta_max 1e-7"),
+    ("gw_rough", "H", "--H -1"), ("gw_rough", "nu", "--H 1e9 --nu 0.9"),
 ]]
 
 
@@ -127,6 +128,7 @@ GOOD = [
     "classical", "classical --summary 1", "classical --law 1 --damping 0 --e 0.3 --n 7",
     "classical --law 3 --stiffness 3 --S 1000 --summary 1", "classical --law 2 --stiffness 1 --e 0.4",
     "gw_adhesion", "gw_adhesion --w 0 --n 5", "gw_adhesion --steps 1 --n 50",
+    "gw_rough --H 1e8 --n 9", "gw_rough --H 1e8 --w 0.05 --n 9",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -308,5 +310,20 @@ both = [d for d in app if d in ret and -3e-7 < d < 2e-7]
 check(all(app[d][col["weight"]] == 0 for d in app) and both and
       all(ret[d][col["weight"]] > 0 and ret[d][col["force"]] < app[d][col["force"]] for d in both),
       "gw_adhesion: loading on approach, unloading on retraction pulling harder at %d overlaps" % len(both))
+
+# gw_rough --H (the deck's gwPlastic on): summits that never yield (H
+# 1e300) give the elastic closed form bit for bit; deep in, every summit
+# fully plastic, the force is c_h H A (c_h = 1 by default) of the printed area.
+rc, out, _ = run(["gw_rough", "--n", "7", "--H", "1e300"])
+head, rows = csv(out)
+col = {h: i for i, h in enumerate(head)}
+check(rc == 0 and all(r[col["force_gw_plastic"]] == r[col["force_gw_elliptic"]] and
+                      r[col["kn_gw_plastic"]] == r[col["kn_gw_elliptic"]] for r in rows),
+      "gw_rough --H 1e300: the elastic closed form bit for bit")
+rc, out, _ = run(["gw_rough", "--n", "3", "--H", "1e6", "--delta_min", "2e-5", "--delta_max", "4e-5"])
+head, rows = csv(out)
+col = {h: i for i, h in enumerate(head)}
+worst = max(abs(r[col["force_gw_plastic"]] / (1e6 * r[col["area_gw_plastic"]]) - 1) for r in rows) if rows else 1
+check(rc == 0 and worst < 1e-9, "gw_rough --H 1e6 deep in: F = c_h H A within %.2g" % worst)
 
 finish()
