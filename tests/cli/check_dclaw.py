@@ -97,6 +97,8 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("gw_adhesion", "w", "--w -1"), ("gw_adhesion", "sigma", "--sigma 0"), ("gw_adhesion", "R", "--R 0"),
     ("gw_adhesion", "delta_min", "--delta_min 1e-6 --delta_max 1e-7"),
     ("gw_rough", "H", "--H -1"), ("gw_rough", "nu", "--H 1e9 --nu 0.9"),
+    ("classical_tangential", "law", "--law 2.5"), ("classical_tangential", "cycles", "--cycles 0"),
+    ("classical_tangential", "u", "--u 0"), ("classical_tangential", "E", "--E -1"),
 ]]
 
 
@@ -129,6 +131,8 @@ GOOD = [
     "classical --law 3 --stiffness 3 --S 1000 --summary 1", "classical --law 2 --stiffness 1 --e 0.4",
     "gw_adhesion", "gw_adhesion --w 0 --n 5", "gw_adhesion --steps 1 --n 50",
     "gw_rough --H 1e8 --n 9", "gw_rough --H 1e8 --w 0.05 --n 9",
+    "classical_tangential", "classical_tangential --law 9 --stiffness 1 --summary 1", "classical_tangential --law 7 --A_t 1e-4",
+    "classical_tangential --law 4 --damping 2 --e_t 0.3", "classical_tangential --law 1 --gammat 10",
 ]
 for args in GOOD:
     rc, out, err = run(args.split())
@@ -325,5 +329,31 @@ head, rows = csv(out)
 col = {h: i for i, h in enumerate(head)}
 worst = max(abs(r[col["force_gw_plastic"]] / (1e6 * r[col["area_gw_plastic"]]) - 1) for r in rows) if rows else 1
 check(rc == 0 and worst < 1e-9, "gw_rough --H 1e6 deep in: F = c_h H A within %.2g" % worst)
+
+# classical_tangential: springSliding with Mindlin's stiffness on the first
+# leg is min(8 G* a u, mu Fn) (G* = G/(2 (2 - nu)) of equal bodies, a the
+# Hertz radius); coulomb is mu Fn against the motion; incremental's stable
+# loop (Walton-Braun) after 30 cycles against the generator's amplitude
+# force and energy per cycle (classical.csv, wbloop rows) within 1e-3.
+Et, nut, Rt, Fnt, mut = 7e10, 0.3, 1e-3, 1.0, 0.5
+Gs = Et / (2 * (1 + nut)) / (2 * (2 - nut))
+at = (3 * Fnt * Rt / (4 * Et / (2 * (1 - nut ** 2)))) ** (1 / 3)
+base = ["classical_tangential", "--E", repr(Et), "--nu", repr(nut), "--R", repr(Rt), "--Fn", repr(Fnt), "--mu", repr(mut)]
+rc, out, _ = run(base + ["--law", "3", "--stiffness", "2", "--u", "1e-6", "--n", "10", "--cycles", "1"])
+head, rows = csv(out)
+worst = max(abs(r[2] - min(8 * Gs * at * r[1], mut * Fnt)) / (mut * Fnt) for r in rows if r[0] == 0) if rows else 1
+check(rc == 0 and worst < 1e-9, "classical_tangential springSliding, first leg: min(8 G* a u, mu Fn) within %.2g mu Fn" % worst)
+rc, out, _ = run(base + ["--law", "0", "--n", "5"])
+head, rows = csv(out)
+check(rc == 0 and rows and all(abs(r[2]) == mut * Fnt and (r[2] > 0) == (r[0] % 2 == 0) for r in rows),
+      "classical_tangential coulomb: mu Fn against the motion")
+for K0, N, X, T_A, W, Tv in crow("wbloop"):
+    rc, out, err = run(["classical_tangential", "--law", "9", "--stiffness", "0", "--kt", repr(K0), "--mu", repr(N),
+                        "--Fn", "1", "--u", repr(X), "--cycles", "30", "--summary", "1"])
+    head, rows = csv(out) if rc == 0 else ([], [[]])
+    got = dict(zip(head, rows[0]))
+    check(rc == 0 and near(got.get("F_amp", 0), T_A) and near(got.get("energy_last_cycle", 0), W),
+          "classical_tangential incremental stable loop K0 %g X %g: F_amp %r, energy %r; reference %r, %r (%s)"
+          % (K0, X, got.get("F_amp"), got.get("energy_last_cycle"), T_A, W, err.strip()))
 
 finish()
