@@ -100,3 +100,15 @@ int dc_cli_row(const char *law, const dc_cli_option *opts, const char *columns, 
   fprintf(stderr, "%s\n", any ? " (too large or too small a value)" : "");
   return 2;
 }
+
+int dc_cli_whole(const char *law, const dc_cli_option *opts, const char *const *keys, int n)
+{
+  for (int i = 0; i < n; i++) {
+    const double v = dc_cli_get(opts, keys[i]);
+    if (v != floor(v)) {
+      fprintf(stderr, "dclaw %s: --%s: %g is not a whole number\n", law, keys[i], v);
+      return 2;
+    }
+  }
+  return 0;
+}

@@ -56,6 +56,11 @@ int dc_cli_given(const dc_cli_option *opts, const char *key);
    error naming --key and returns 2. */
 int dc_cli_count(const char *law, const dc_cli_option *opts, const char *key, int *n);
 
+/* Whether the options keys[0..n-1] hold whole numbers (settings given by
+   number); else prints an error naming the first that does not and
+   returns 2. */
+int dc_cli_whole(const char *law, const dc_cli_option *opts, const char *const *keys, int n);
+
 /* Overlap i of n evenly spaced from d0 to d1 (d0 if n == 1); finite for finite ends. */
 double dc_cli_range(double d0, double d1, int i, int n);
 

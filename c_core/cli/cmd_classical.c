@@ -54,13 +54,7 @@ static int cmd_classical(int argc, char **argv)
   p.eta_kk = dc_cli_get(o, "eta");
   p.S = dc_cli_get(o, "S");
   const char *const ints[] = {"law", "stiffness", "damping", "limit"};
-  for (int i = 0; i < 4; i++) {
-    const double v = dc_cli_get(o, ints[i]);
-    if (v != floor(v)) {
-      fprintf(stderr, "dclaw classical: --%s: %g is not a whole number\n", ints[i], v);
-      return 2;
-    }
-  }
+  if (dc_cli_whole(argv[0], o, ints, 4)) return 2;
   if (p.law == DC_CLASSICAL_HERTZ && (p.damping == DC_DAMPING_RESTITUTION || p.damping == DC_DAMPING_TSUJI)) {
     /* the damping law's coefficient from e, as the LIGGGHTS wrapper forms it */
     if (!(p.e > 0.0 && p.e <= 1.0)) {

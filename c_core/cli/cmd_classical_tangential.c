@@ -46,11 +46,7 @@ static int cmd_classical_tangential(int argc, char **argv)
       dc_cli_count(argv[0], o, "cycles", &cycles))
     return 2;
   const char *const ints[] = {"law", "stiffness", "damping"};
-  for (int i = 0; i < 3; i++)
-    if (dc_cli_get(o, ints[i]) != floor(dc_cli_get(o, ints[i]))) {
-      fprintf(stderr, "dclaw classical_tangential: --%s: %g is not a whole number\n", ints[i], dc_cli_get(o, ints[i]));
-      return 2;
-    }
+  if (dc_cli_whole(argv[0], o, ints, 3)) return 2;
   const double R = dc_cli_get(o, "R"), E = dc_cli_get(o, "E"), nu = dc_cli_get(o, "nu"), Fn = dc_cli_get(o, "Fn");
   const double me = dc_cli_get(o, "meff"), u = dc_cli_get(o, "u"), speed = dc_cli_get(o, "speed");
   if (!(E > 0.0 && isfinite(E)) || !(nu >= -1.0 && nu <= 0.5)) {
