@@ -206,8 +206,12 @@ typedef struct {
    dw = omega_i - omega_j. K_i + K_j must be positive definite (the
    relative curvature of a contact; its smaller eigenvalue > 1e-12 of the
    larger), every input finite, d1 unit and in the plane (within 1e-6)
-   where k1 != k2; else DC_EDOM. DC_ERANGE when V overflows. Outputs
-   untouched on error. */
+   where k1 != k2; else DC_EDOM (a subnormal relative curvature, a radius
+   beyond 1e308 m, may be taken as flat). DC_ERANGE when V or the sum of
+   the curvatures overflows. Where the normal part of dv exceeds its
+   tangential part by 1e12 and more, the rounding of the normal part rules
+   the slip and the direction (only finite outputs are promised then).
+   Outputs untouched on error. */
 int dc_rolling_kinematics(const double n[3], const dc_rolling_curvature *ci,
                           const dc_rolling_curvature *cj, const double dv[3],
                           const double dw[3], dc_rolling_kin *k);
