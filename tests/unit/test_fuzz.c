@@ -3436,8 +3436,9 @@ static void fuzz_rolling(void)
     SENTINEL(kk);
     const int st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kk);
     FZ_CHECK(f, st, bad, dom, UNTOUCHED(kk), rolling_kin_ok(&kk, n, dv),
-             "n (%.17g %.17g %.17g) k_i %.17g %.17g k_j %.17g %.17g dv (%.17g %.17g %.17g) dw (%.17g %.17g %.17g)", n[0],
-             n[1], n[2], ci.k1, ci.k2, cj.k1, cj.k2, dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
+             "n (%.17g %.17g %.17g) k_i %.17g %.17g d1 (%.17g %.17g %.17g) k_j %.17g %.17g d1 (%.17g %.17g %.17g) "
+             "dv (%.17g %.17g %.17g) dw (%.17g %.17g %.17g)", n[0], n[1], n[2], ci.k1, ci.k2, ci.d1[0], ci.d1[1], ci.d1[2],
+             cj.k1, cj.k2, cj.d1[0], cj.d1[1], cj.d1[2], dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
     /* V <= (|dw| + max|k| |dv|) / l2, slip <= |dv| and spin <= |dw| (times a few) */
     const double kmax = fmax(fmax(fabs(ci.k1), fabs(ci.k2)), fmax(fabs(cj.k1), fabs(cj.k2)));
     const double lV = fmax(lg(max_abs3(dw)), lg(kmax) + lg(max_abs3(dv))) + lg(8.0) - lg(l2);
