@@ -342,7 +342,9 @@ int dc_gw_plastic_summit_init(const dc_hertz_geom *g, double Estar, const dc_gw_
   }
   if (!(t.lambda >= 1.0)) t.lambda = 1.0;   /* not reached (tested down to R_minor/R_major = 1e-12) */
   /* Eq. 41 for a summit: w1 = (pi K_v H/(2 E*))^2 R_area^2/R_force */
-  const double t1 = M_PI / 2.0 * p->K_v * (p->hardness / Estar) * (g->R_area / sqrt(g->R_force));
+  double t1 = M_PI / 2.0 * p->K_v * (p->hardness / Estar) * (g->R_area / sqrt(g->R_force));
+  if (isnan(t1)) t1 = M_PI / 2.0 * (p->K_v * (p->hardness / Estar)) * (g->R_area / sqrt(g->R_force));   /* inf x 0 */
+  if (isnan(t1)) return DC_ERANGE;
   t.w1 = t1 * t1;
   /* w2 = (c_A/lambda) w1 (the plastic area at w2 is c_A times the Hertz
      area at w1); no elastic-plastic range where c_A <= lambda */

@@ -185,7 +185,8 @@ typedef struct {
 /* Binds params (checked by dc_gw_plastic_check) to geometry g and Estar > 0
    (finite); DC_EDOM for a bad Estar or params. w1 may underflow to 0 (all
    summits fully plastic) or overflow to +inf (all elastic): both are the
-   law's limits, not errors. */
+   law's limits, not errors (K_v near DBL_MAX with H/E* underflowing to 0
+   gives w1 = 0, not NaN); DC_ERANGE where w1 has no such limit. */
 int dc_gw_plastic_summit_init(const dc_hertz_geom *g, double Estar, const dc_gw_plastic_params *p,
                               dc_gw_plastic_summit *s);
 
