@@ -99,7 +99,7 @@ others = [(p, False) for p in sorted(glob.glob(os.path.join(LIGG_SRC, "..", "exa
 others += [(p, True) for p in USER_DECKS]
 for deck, user in others:
     for words in model_lines(open(deck, errors="replace").read()):
-        if any(w.startswith("${") or w.startswith("$") for w in words):
+        if any(w.startswith("$") for w in words):
             if user:
                 sys.stderr.write("gen_whitelist: %s: a model from a variable is not compiled (%s): write the "
                                  "models out on the line\n" % (deck, " ".join(words)))
