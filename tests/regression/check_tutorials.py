@@ -17,11 +17,10 @@ import math
 import os
 import re
 import shutil
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import LIGGGHTS, ROOT, start  # noqa: E402
+from regress import ROOT, run, start  # noqa: E402
 
 work, _, c = start()
 TUT = os.path.join(ROOT, ".deps", "liggghts-3.8.0", "examples", "LIGGGHTS", "Tutorials_public")
@@ -84,24 +83,22 @@ def vtk_files_read(post):
     return len(files), good
 
 
-env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
 for folder, deck, steps in TUTORIALS:
     ref = None
     for name, model in VARIANTS:
         dest = os.path.join(work, folder, re.sub(r"\W+", "_", name))
         prepare(folder, deck, steps, model, dest)
-        p = subprocess.run([LIGGGHTS, "-in", deck, "-log", "log.run"], cwd=dest, env=env, stdout=subprocess.PIPE,
-                           stderr=subprocess.STDOUT, text=True, errors="replace")
+        code, out = run(os.path.join(dest, deck), dest, tag="run", expect_error=True)
         log = open(os.path.join(dest, "log.run"), errors="replace").read() if os.path.exists(
             os.path.join(dest, "log.run")) else ""
         rows = thermo(log)
         what = "%s (%s)" % (folder, name)
         nruns = len(re.findall(r"^\s*run\s", open(os.path.join(dest, deck)).read(), re.M))
         done = log.count("Loop time of")
-        ok = p.returncode == 0 and done == nruns and rows
+        ok = code == 0 and done == nruns and rows
         if not ok:
-            print(p.stdout[-2000:])
-        c.true(ok, "%s: completes, %d of %d runs (exit %d)" % (what, done, nruns, p.returncode))
+            print(out[-2000:])
+        c.true(ok, "%s: completes, %d of %d runs (exit %d)" % (what, done, nruns, code))
         if not ok:
             continue
         finite = all(math.isfinite(v) for r in rows for v in r)

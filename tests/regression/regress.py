@@ -44,7 +44,7 @@ def start():
 
 
 def run(deck, workdir, ranks=1, variables=None, tag="run", expect_error=False, compiled=True):
-    """Runs `deck` (path under inputs/) in workdir; returns the log text.
+    """Runs `deck` (a path under inputs/, or an absolute one) in workdir; returns the log text.
     With expect_error, returns (exit code, screen output + log) instead of
     failing on a non-zero exit. compiled=False lets the deck's combination
     run on LIGGGHTS' generic path (a check of set-up, not of speed)."""
