@@ -421,35 +421,56 @@ static void raise_relative(double Ki[3], double Kj[3], double k_min)
   Kj[0] += A0; Kj[1] += A1; Kj[2] += A2;
 }
 
+static int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                         const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k);
+static int kinematics_scaled(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                             const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k);
+
 /* Kinematics of rolling (review Eqs. 89-91, derived in the header), with
    the relative curvature raised to k_min (0: not raised); singular_ok: a
    relative curvature that is not positive definite gives V = 0 and DC_OK
-   instead of DC_EDOM. */
+   instead of DC_EDOM. The domain checked here, the rest in kinematics_at. */
 static int kinematics(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
                       const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
 {
   if (!dc_finite3(n) || !dc_finite3(dv) || !dc_finite3(dw)) return DC_EDOM;
   if (!(fabs(dc_dot3(n, n) - 1.0) <= 1e-6)) return DC_EDOM;
   if (!curvature_ok(ci, n) || !curvature_ok(cj, n)) return DC_EDOM;
-  /* velocities below 2^-900 scaled up first (exactly; V, slip and spin
-     scaled back): subnormal ones have too few bits for a direction */
+  /* velocities below 2^-900, or a rolling speed below 2^-900 from larger
+     ones (a curvature near DBL_MAX), scaled up first (exactly; V, slip and
+     spin scaled back): subnormal ones have too few bits for a direction */
   const double vm = fmax(fmax(fabs(dv[0]), fmax(fabs(dv[1]), fabs(dv[2]))), fmax(fabs(dw[0]), fmax(fabs(dw[1]), fabs(dw[2]))));
-  if (vm > 0.0 && vm < 0x1p-900) {
-    double dv2[3], dw2[3];
-    for (int i = 0; i < 3; i++) {
-      dv2[i] = ldexp(dv[i], 600);
-      dw2[i] = ldexp(dw[i], 600);
-    }
-    dc_rolling_kin t;
-    const int st = kinematics(n, ci, cj, dv2, dw2, k_min, singular_ok, &t);
-    if (st != DC_OK) return st;
-    t.V = ldexp(t.V, -600);
-    if (t.V == 0.0) t.ex[0] = t.ex[1] = t.ex[2] = 0.0;   /* V underflowed */
-    for (int i = 0; i < 3; i++) t.slip[i] = ldexp(t.slip[i], -600);
-    t.spin = ldexp(t.spin, -600);
-    *k = t;
-    return DC_OK;
+  if (vm > 0.0 && vm < 0x1p-900) return kinematics_scaled(n, ci, cj, dv, dw, k_min, singular_ok, k);
+  const int st = kinematics_at(n, ci, cj, dv, dw, k_min, singular_ok, k);
+  if (st == DC_OK && k->V > 0.0 && k->V < 0x1p-900 && vm < 0x1p400)
+    return kinematics_scaled(n, ci, cj, dv, dw, k_min, singular_ok, k);
+  return st;
+}
+
+/* kinematics_at on dv, dw times 2^600, the results scaled back */
+static int kinematics_scaled(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                             const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
+{
+  double dv2[3], dw2[3];
+  for (int i = 0; i < 3; i++) {
+    dv2[i] = ldexp(dv[i], 600);
+    dw2[i] = ldexp(dw[i], 600);
   }
+  dc_rolling_kin t;
+  const int st = kinematics_at(n, ci, cj, dv2, dw2, k_min, singular_ok, &t);
+  if (st != DC_OK) return st;
+  t.V = ldexp(t.V, -600);
+  if (t.V == 0.0) t.ex[0] = t.ex[1] = t.ex[2] = 0.0;   /* V underflowed */
+  for (int i = 0; i < 3; i++) t.slip[i] = ldexp(t.slip[i], -600);
+  t.spin = ldexp(t.spin, -600);
+  *k = t;
+  return DC_OK;
+}
+
+/* The kinematics of checked inputs (above) */
+static int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                         const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
+{
   if (ci->k1 == ci->k2 && cj->k1 == cj->k2) {
     /* both isotropic (spheres, a sphere on a plane): K_i + K_j = (k_i + k_j) I,
        no basis needed, the same Vbar */
@@ -654,7 +675,14 @@ static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *
   double ey[3];
   cross3(n, ex, ey);
   const double V = k->V;
-  const double xi_x = dc_dot3(k->slip, ex) / V, xi_y = dc_dot3(k->slip, ey) / V, phi = k->spin / V;
+  double xi_x = dc_dot3(k->slip, ex) / V, xi_y = dc_dot3(k->slip, ey) / V;
+  const double phi = k->spin / V;
+  if (!(isfinite(xi_x) && isfinite(xi_y))) {
+    /* a dot product of slips near DBL_MAX overflowed: on slip / 4 */
+    const double s4[3] = {0.25 * k->slip[0], 0.25 * k->slip[1], 0.25 * k->slip[2]};
+    xi_x = 4.0 * (dc_dot3(s4, ex) / V);
+    xi_y = 4.0 * (dc_dot3(s4, ey) / V);
+  }
   /* coefficients: along an axis of the patch, Kalker's; oblique, those of
      the effective axis ratio, c33 scaled by the lateral second moment */
   dc_kalker_coef c;
@@ -678,10 +706,15 @@ static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *
   double Fx = -Gc2 * c.c11 * xi_x;
   double Fy = -Gc2 * fy;
   double Mz = Gc2 * cc * mz;
-  /* G c^2 or G c^3 may overflow where the product does not */
+  /* G c^2, G c^3 or a coefficient times a creepage (times c) may
+     overflow, or give inf x 0, where the product does not: term by term */
   if (!isfinite(Fx)) Fx = -dc_scaled_product(5, (const double[]){rm->G, cc, cc, c.c11, xi_x});
-  if (!isfinite(Fy) && isfinite(fy)) Fy = -dc_scaled_product(4, (const double[]){rm->G, cc, cc, fy});
-  if (!isfinite(Mz) && isfinite(mz)) Mz = dc_scaled_product(5, (const double[]){rm->G, cc, cc, cc, mz});
+  if (!isfinite(Fy))
+    Fy = -(dc_scaled_product(5, (const double[]){rm->G, cc, cc, c.c22, xi_y}) +
+           dc_scaled_product(6, (const double[]){rm->G, cc, cc, cc, c.c23, phi}));
+  if (!isfinite(Mz))
+    Mz = dc_scaled_product(6, (const double[]){rm->G, cc, cc, cc, c.c23, xi_y}) -
+         dc_scaled_product(7, (const double[]){rm->G, cc, cc, cc, cc, c.c33, phi});
   const double muF = p->mu * patch->F_bound;
   if (!isfinite(muF) || !isfinite(xi_x) || !isfinite(xi_y) || !isfinite(phi)) return DC_ERANGE;
   /* the explicit step's stability: the linear law scaled by (1 + x^4)^-1/4 */
@@ -698,6 +731,7 @@ static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *
   }
   double FL = sqrt(Fx * Fx + Fy * Fy);
   if (!(FL > 1e-150 && FL < 1e150)) FL = hypot(Fx, Fy);   /* squares under- or overflow */
+  if (isnan(FL)) FL = INFINITY;   /* two overflowed terms of Fy: inf - inf */
   double ux = 0.0, uy = 0.0;   /* direction of the linear force */
   if (!isfinite(FL)) {
     /* the same direction from creepages scaled to order one */

@@ -279,11 +279,18 @@ DC_INLINE int dc_classical_tangential_step_law(int law, int checked, const dc_cl
   switch (law) {
   case DC_CT_COULOMB: {
     /* notes 4.2: F = mu F_n v/|v|, v from vt scaled to order one (exactly:
-       a subnormal vt has too few bits to give a direction) */
+       a subnormal vt has too few bits to give a direction), and again
+       after the projection (a vt mostly along n leaves a subnormal v, whose
+       rounded |v| is off by up to 1e-11) */
     int e;
     frexp(fmax(fabs(vt[0]), fmax(fabs(vt[1]), fabs(vt[2]))), &e);
     for (int k = 0; k < 3; k++) v[k] = ldexp(vt[k], -e);
     ct_project_plane(v, n);
+    const double vm = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+    if (vm < 1e-270) {
+      frexp(vm, &e);
+      for (int k = 0; k < 3; k++) v[k] = ldexp(v[k], -e);
+    }
     const double vv = ct_norm3(v);
     if (vv > 0.0) {
       for (int k = 0; k < 3; k++) o.Ft[k] = v[k] / vv * lim;
