@@ -59,6 +59,7 @@
 #include "dc/rolling_kalker.h"
 #include "dc/root_find.h"
 #include "dc/rough_tangential.h"
+#include "dc/scene.h"
 #include "dc/status.h"
 #include <float.h>
 #include <limits.h>
@@ -4206,6 +4207,120 @@ static void fuzz_gwa_parts(void)
   fz_done(f);
 }
 
+/* ---------------------------------------------------------------- */
+/* scene.h: the advisor's measures                                    */
+
+/* A value against its long double reference: within 1e-14 where the
+   reference is a normal double, DC_ERANGE (only) where it is not. */
+static int scene_value_ok(int st, double v, long double ref)
+{
+  const int normal = ref >= DBL_MIN * (1.0L + 1e-12L) && ref <= DBL_MAX * (1.0L - 1e-12L);
+  const int edge = ref >= DBL_MIN * (1.0L - 1e-12L) && ref <= DBL_MAX * (1.0L + 1e-12L);
+  if (st == DC_OK) return edge && fabsl(v / ref - 1.0L) <= 1e-14L;
+  return st == DC_ERANGE && !normal;
+}
+
+static void fuzz_scene(void)
+{
+  fz_fn *f = fz_new("dc_scene_rayleigh_time");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R = A(U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos()), rho = A(U() < 0.8 ? fz_log(1e2, 2e4) : fz_pos());
+    const double E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos()), nu = A(U() < 0.9 ? 0.5 * U() : fz_sign(U()));
+    const int bad = !ALLFIN(R, rho, E, nu), dom = !bad && R > 0.0 && rho > 0.0 && E > 0.0 && nu >= 0.0 && nu <= 0.5;
+    double T;
+    SENTINEL(T);
+    const int st = dc_scene_rayleigh_time(R, rho, E, nu, &T);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(T), isfinite(T) && T > 0.0, "R %.17g rho %.17g E %.17g nu %.17g", R, rho, E, nu);
+    /* against long double (no overflow there): DC_ERANGE exactly where T leaves the normal doubles */
+    const long double Tl = (long double)M_PI * R * sqrtl((long double)rho * (2.0L * (1.0L + nu)) / E) /
+                           (0.1631L * nu + 0.8766L);
+    if (dom) FZ_EXPECT(f, scene_value_ok(st, T, Tl), "not pi R (rho/G)^1/2 / (0.1631 nu + 0.8766)",
+                       "R %.17g rho %.17g E %.17g nu %.17g: status %d", R, rho, E, nu, st);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_scene_tabor");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double R = A(U() < 0.8 ? fz_log(1e-6, 1e-1) : fz_pos()), w = A(U() < 0.1 ? 0.0 : U() < 0.8 ? fz_log(1e-3, 1.0) : fz_pos());
+    const double E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos()), z0 = A(U() < 0.8 ? fz_log(1e-10, 1e-9) : fz_pos());
+    const int bad = !ALLFIN(R, w, E, z0), dom = !bad && R > 0.0 && w >= 0.0 && E > 0.0 && z0 > 0.0;
+    double mu;
+    SENTINEL(mu);
+    const int st = dc_scene_tabor(R, w, E, z0, &mu);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(mu), isfinite(mu) && mu >= 0.0, "R %.17g w %.17g E* %.17g z0 %.17g", R, w, E, z0);
+    const long double ml = cbrtl((long double)R * w * w / ((long double)E * E * z0 * z0 * z0));
+    if (dom && w > 0.0) FZ_EXPECT(f, scene_value_ok(st, mu, ml), "not (R w^2 / (E*^2 z0^3))^1/3",
+                                  "R %.17g w %.17g E* %.17g z0 %.17g: status %d", R, w, E, z0, st);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_scene_hertz_overlap");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos()), F = A(U() < 0.05 ? 0.0 : U() < 0.8 ? fz_log(1e-6, 1e3) : fz_wide());
+    const int bad = !ALLFIN(E, F), dom = !bad && E > 0.0 && F >= 0.0;
+    double d;
+    SENTINEL(d);
+    const int st = dc_scene_hertz_overlap(g, E, F, &d);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(d), isfinite(d) && d >= 0.0, "R_force %.17g E* %.17g F %.17g", g->R_force, E, F);
+    const long double dl = cbrtl(0.5625L * F * F / ((long double)E * E * g->R_force));
+    if (dom && F > 0.0) FZ_EXPECT(f, scene_value_ok(st, d, dl), "not (3 F / (4 E* R_force^1/2))^2/3",
+                                  "R_force %.17g E* %.17g F %.17g: status %d", g->R_force, E, F, st);
+    /* the round trip through dc_hertz_contact (delta^3/2 normal) */
+    dc_hertz_state hs;
+    if (st == DC_OK && d > 1e-200 && d < 1e200 && E >= 1e-290 && dc_hertz_contact(g, E, d, &hs) == DC_OK && hs.F > 1e-290 && hs.F < 1e290)
+      FZ_EXPECT(f, fabs(hs.F / F - 1.0) <= 1e-14, "dc_hertz_contact at the overlap is not F",
+                "R_force %.17g E* %.17g F %.17g: delta %.17g gives %.17g", g->R_force, E, F, d, hs.F);
+  }
+  fz_done(f);
+
+  f = fz_new("dc_scene_superquadric_radius");
+  fz_fn *fs = fz_new("dc_scene_shape_error");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double L = U() < 0.8 ? fz_log(1e-5, 1e-1) : fz_pos();
+    double sh[3], bl[2];
+    for (int i = 0; i < 3; i++) sh[i] = A(L * fz_log(0.2, 1.0));
+    const int sphere = U() < 0.2;
+    for (int i = 0; i < 2; i++) bl[i] = A(sphere ? 2.0 : U() < 0.8 ? 2.0 + 8.0 * U() : U() < 0.5 ? fz_log(2.0, 1e3) : fz_wide());
+    const int bad = !fin(sh, 3) || !fin(bl, 2);
+    const int dom = !bad && sh[0] > 0.0 && sh[1] > 0.0 && sh[2] > 0.0 && bl[0] >= 2.0 && bl[0] <= 1e3 && bl[1] >= 2.0 &&
+                    bl[1] <= 1e3;
+    double R;
+    SENTINEL(R);
+    const int st = dc_scene_superquadric_radius(sh, bl, &R);
+    FZ_CHECK(f, st, bad, dom, UNTOUCHED(R), isfinite(R) && R > 0.0,
+             "shape %.17g %.17g %.17g blockiness %.17g %.17g", sh[0], sh[1], sh[2], bl[0], bl[1]);
+    /* between the inscribed ellipsoid's and the box's volume-equivalent radii */
+    const long double rl = cbrtl((long double)sh[0] * sh[1] * sh[2]);
+    if (st == DC_OK)
+      FZ_EXPECT(f, R >= rl * (1.0L - 1e-13L) && R <= rl * cbrtl(6.0L / (long double)M_PI) * (1.0L + 1e-13L) &&
+                       (bl[0] != 2.0 || bl[1] != 2.0 || fabsl(R / rl - 1.0L) <= 1e-13L),
+                "not between the ellipsoid's and the box's radii", "shape %.17g %.17g %.17g blockiness %.17g %.17g: %.17g",
+                sh[0], sh[1], sh[2], bl[0], bl[1], R);
+    if (k % 200 != 0) continue;   /* the sampling: 1 call in 200, m up to 6 */
+    const int m = U() < 0.9 ? 2 + UI(5) : AI(4);
+    const double cap = A(U() < 0.8 ? fz_log(1.0, 1e3) : fz_wide());
+    dc_scene_shape s;
+    SENTINEL(s);
+    fs->seconds -= fz_now();
+    const int ss = dc_scene_shape_error(sh, bl, m, cap, &s);
+    fs->seconds += fz_now();
+    const int doms = dom && m >= 2 && m <= 64 && cap >= 1.0 && cap <= 1e6;
+    FZ_CHECK(fs, ss, bad || !isfinite(cap), doms, UNTOUCHED(s),
+             FIN(s) && s.err_pair_max >= s.err_pair_rms && s.err_pair_rms >= 0.0 && s.err_wall_max >= s.err_wall_rms &&
+                 s.err_wall_rms >= 0.0 && s.R_body_min > 0.0 && s.R_body_min <= s.R_body_max &&
+                 s.R_body_max <= cap * s.R_eq * (1.0 + 1e-12) && (ss != DC_OK || st != DC_OK || s.R_eq == R ||
+                                                                 fabs(s.R_eq / R - 1.0) <= 1e-14),
+             "shape %.17g %.17g %.17g blockiness %.17g %.17g m %d cap %.17g", sh[0], sh[1], sh[2], bl[0], bl[1], m, cap);
+  }
+  fz_done(f);
+  fz_done(fs);
+}
+
 int main(void)
 {
   clock_gettime(CLOCK_MONOTONIC, &fz_t0);
@@ -4294,6 +4409,7 @@ int main(void)
   FZ_RUN(fuzz_rolling_step);
   FZ_RUN(fuzz_bound_parts);
   FZ_RUN(fuzz_gwa_parts);
+  FZ_RUN(fuzz_scene);
 #undef FZ_RUN
 
   printf("\n%-32s %9s %9s %8s %8s %8s %6s %8s\n", "function", "calls", "OK", "EDOM", "ENOCONV", "ERANGE", "fails",

@@ -1,0 +1,700 @@
+#!/usr/bin/env python3
+"""dcadvise.py: which contact physics a LIGGGHTS deck's scene needs.
+
+Reads an ordinary LIGGGHTS deck (materials from `fix property/global`,
+particle templates or `set ... shape/diameter/density`, insertion speeds,
+gravity, box and insertion regions, time step, the pair and wall model
+lines; variables resolved as LIGGGHTS resolves them, `-var NAME VALUE` as
+LIGGGHTS takes it) and prints, per contact kind (type pair, type on a
+wall) and per physical effect, the measure, the model the scene needs
+(the cheapest one within the tolerance), its cost from the project's report
+and the deck lines; then warnings where the deck's choice is outside its
+range. Every physical figure comes from c_core through `dclaw scene` and
+`dclaw shape`; this script only reads the deck and applies the tolerance.
+doc/advisor.md explains each measure.
+
+Usage:
+  dcadvise.py DECK [-var NAME VALUE ...] [--tol T] [--w W] [--sigma S]
+              [--H H] [--z0 Z] [--csv FILE] [--dclaw PATH]
+  --tol    the force or restitution change below which a richer law is not
+           needed (default 0.05)
+  --w, --sigma, --H   work of adhesion [J/m^2], rms roughness [m], hardness
+           [Pa] where the deck does not give them (workOfAdhesion,
+           surfaceRoughness, hardness); without them the effect is assumed
+           absent and the output says so
+  --z0     range of the surface forces for the Tabor parameter [m]
+           (default 0.4e-9)
+  --csv    also write every measure per contact kind to FILE
+Exit status 0; 2 with a message naming the deck line for a deck it cannot
+read.
+"""
+import ast
+import csv
+import io
+import math
+import operator
+import os
+import re
+import shlex
+import subprocess
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+class DeckError(Exception):
+    pass
+
+
+# ------------------------------------------------------------ deck reading
+
+_OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
+        ast.Pow: operator.pow, ast.USub: operator.neg, ast.UAdd: operator.pos}
+_FUNCS = {"sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs, "sin": math.sin,
+          "cos": math.cos, "tan": math.tan, "asin": math.asin, "acos": math.acos, "atan": math.atan,
+          "ceil": math.ceil, "floor": math.floor, "round": round}
+
+
+# the commands whose values the advisor reads (variables are substituted in these only)
+READ = {"include", "atom_style", "region", "create_box", "timestep", "pair_style", "fix", "create_atoms", "set"}
+
+
+class Deck:
+    """The commands of a deck, variables substituted, and what they set."""
+
+    def __init__(self, path, cli_vars):
+        self.vars = {}        # name -> (style, [values]) ; equal: expression text
+        self.locked = set()   # -var names: the deck's own definition does not replace them
+        for name, values in cli_vars:
+            self.vars[name] = ("index", values)
+            self.locked.add(name)
+        self.props = {}       # property name -> (style, values, where)
+        self.types = {}       # atom type -> dict(radius, shape, blockiness, density, where)
+        self.templates = {}   # template id -> atom type
+        self.regions = {}     # region id -> (style, args, where)
+        self.box = None       # (region id, where)
+        self.ntypes = None
+        self.gravity = None   # (g, (x, y, z), where)
+        self.dt = None        # (dt, where)
+        self.inserts = []     # dict(vel, region, where)
+        self.created = []     # (type, region, where) of create_atoms
+        self.sets = []        # what `set group` lines give the created particles
+        self.pair = None      # (words, where)
+        self.walls = []       # (words, where)
+        self.atom_style = "granular"
+        self.assumed = []     # what the reading had to assume
+        self.dir = os.path.dirname(os.path.abspath(path))
+        self._read(path)
+
+    # --- lines, continuations, comments, includes
+    def _read(self, path, depth=0):
+        try:
+            text = open(path).read()
+        except OSError as e:
+            raise DeckError("cannot read deck %s: %s" % (path, e.strerror))
+        lines = text.split("\n")
+        i = 0
+        while i < len(lines):
+            start = i
+            line = lines[i]
+            while line.rstrip().endswith("&") and i + 1 < len(lines):
+                i += 1
+                line = line.rstrip()[:-1] + " " + lines[i]
+            i += 1
+            where = "%s:%d" % (os.path.basename(path), start + 1)
+            self._command(line, where, depth)
+
+    def _strip_comment(self, line):
+        out, quote = [], None
+        for ch in line:
+            if quote:
+                if ch == quote:
+                    quote = None
+            elif ch in "\"'":
+                quote = ch
+            elif ch == "#":
+                break
+            out.append(ch)
+        return "".join(out)
+
+    def _substitute(self, line, where):
+        def value_of(name):
+            if name not in self.vars:
+                raise DeckError("%s: variable %s is used but never defined (define it, or give -var %s VALUE)"
+                                % (where, name, name))
+            return self._format(self.value(name, where))
+
+        def immediate(m):
+            return self._format(self.evaluate(m.group(1), where))
+
+        # not inside quotes (LIGGGHTS substitutes those when the command runs)
+        parts = re.split(r"(\"[^\"]*\"|'[^']*')", line)
+        for k in range(0, len(parts), 2):
+            p = re.sub(r"\$\(([^)]*)\)", immediate, parts[k])
+            p = re.sub(r"\$\{([A-Za-z0-9_]+)\}", lambda m: value_of(m.group(1)), p)
+            parts[k] = re.sub(r"\$([A-Za-z0-9_])", lambda m: value_of(m.group(1)), p)
+        return "".join(parts)
+
+    @staticmethod
+    def _format(v):
+        if isinstance(v, float):
+            return repr(v) if v != int(v) or abs(v) >= 1e16 else str(int(v))
+        return str(v)
+
+    def value(self, name, where):
+        style, vals = self.vars[name]
+        if style == "equal":
+            return self.evaluate(vals[0], where)
+        return vals[0]
+
+    def evaluate(self, expr, where):
+        """An equal-style expression: numbers, + - * / ^, functions, PI, v_name."""
+        text = expr.strip().strip("\"'")
+        text = re.sub(r"\bv_([A-Za-z0-9_]+)", lambda m: "(%s)" % self._format(self._number(m.group(1), where)), text)
+        text = text.replace("^", "**").replace("PI", repr(math.pi))
+        try:
+            tree = ast.parse(text, mode="eval")
+            return float(self._eval(tree.body))
+        except (SyntaxError, ValueError, TypeError, ZeroDivisionError, OverflowError) as e:
+            raise DeckError("%s: cannot evaluate '%s' (%s)" % (where, expr, e))
+
+    def _number(self, name, where):
+        if name not in self.vars:
+            raise DeckError("%s: variable %s is used but never defined" % (where, name))
+        v = self.value(name, where)
+        try:
+            return float(v)
+        except ValueError:
+            raise DeckError("%s: variable %s = '%s' is not a number" % (where, name, v))
+
+    def _eval(self, node):
+        if isinstance(node, ast.Constant) and isinstance(node.value, (int, float)):
+            return node.value
+        if isinstance(node, ast.BinOp) and type(node.op) in _OPS:
+            return _OPS[type(node.op)](self._eval(node.left), self._eval(node.right))
+        if isinstance(node, ast.UnaryOp) and type(node.op) in _OPS:
+            return _OPS[type(node.op)](self._eval(node.operand))
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in _FUNCS:
+            return _FUNCS[node.func.id](*[self._eval(a) for a in node.args])
+        raise ValueError("unsupported element %s" % ast.dump(node)[:40])
+
+    # --- the commands the advisor reads
+    def _command(self, raw, where, depth):
+        line = self._strip_comment(raw).strip()
+        if not line:
+            return
+        words0 = line.split()
+        if words0[0] == "variable" and len(words0) >= 3:
+            # the value of an equal-style variable is evaluated on use, as LIGGGHTS does
+            self._variable(shlex.split(line), where)
+            return
+        if words0[0] not in READ:
+            return   # not read: its variables need no value (thermo keywords, per-atom ones)
+        line = self._substitute(line, where)
+        try:
+            w = shlex.split(line)
+        except ValueError as e:
+            raise DeckError("%s: %s" % (where, e))
+        cmd = w[0]
+        if cmd == "include" and len(w) >= 2:
+            path = w[1] if os.path.isabs(w[1]) else os.path.join(self.dir, w[1])
+            if depth > 10:
+                raise DeckError("%s: include nested too deep" % where)
+            self._read(path, depth + 1)
+        elif cmd == "atom_style":
+            self.atom_style = w[1]
+        elif cmd == "region" and len(w) >= 3:
+            self.regions[w[1]] = (w[2], w[3:], where)
+        elif cmd == "create_box" and len(w) >= 3:
+            self.ntypes = int(float(w[1]))
+            self.box = (w[2], where)
+        elif cmd == "timestep":
+            self.dt = (float(w[1]), where)
+        elif cmd == "pair_style" and len(w) >= 2 and w[1] == "gran":
+            self.pair = (w, where)
+        elif cmd == "fix" and len(w) >= 4:
+            self._fix(w, where)
+        elif cmd == "create_atoms" and len(w) >= 3:
+            self.created.append((int(float(w[1])), w[3] if len(w) > 3 and w[2] == "region" else None, where))
+        elif cmd == "set" and len(w) >= 4:
+            self._set(w, where)
+
+    def _variable(self, w, where):
+        name, style = w[1], w[2]
+        if name in self.locked:
+            return
+        if style in ("index", "string", "loop", "world", "universe", "uloop"):
+            self.vars[name] = ("index", w[3:] or [""])
+        elif style == "equal":
+            self.vars[name] = ("equal", [" ".join(w[3:])])
+        elif style == "delete":
+            self.vars.pop(name, None)
+        # atom, file, python, ... styles are not values the advisor reads
+
+    def _fix(self, w, where):
+        style = w[3]
+        if style == "property/global" and len(w) >= 6:
+            name, kind = w[4], w[5]
+            vals = w[6:]
+            if kind == "peratomtypepair":
+                vals = vals[1:]   # the leading n
+            try:
+                self.props[name] = (kind, [float(x) for x in vals], where)
+            except ValueError:
+                raise DeckError("%s: property %s: values %s are not all numbers" % (where, name, " ".join(vals)))
+        elif style in ("particletemplate/sphere", "particletemplate/superquadric"):
+            self._template(w, where)
+        elif style == "particledistribution/discrete":
+            pass
+        elif style.startswith("insert/"):
+            ins = {"where": where, "vel": (0.0, 0.0, 0.0), "region": None}
+            for k, word in enumerate(w):
+                if word == "vel" and k + 4 < len(w) and w[k + 1] == "constant":
+                    ins["vel"] = tuple(float(x) for x in w[k + 2:k + 5])
+                elif word == "region" and k + 1 < len(w):
+                    ins["region"] = w[k + 1]
+                elif word in ("insertion_face",) and k + 1 < len(w):
+                    ins["face"] = w[k + 1]
+            self.inserts.append(ins)
+        elif style == "gravity" and len(w) >= 5:
+            g = float(w[4])
+            vec = (0.0, 0.0, -1.0)
+            if "vector" in w:
+                k = w.index("vector")
+                vec = tuple(float(x) for x in w[k + 1:k + 4])
+            self.gravity = (g, vec, where)
+        elif style == "wall/gran":
+            self.walls.append((w, where))
+
+    def _template(self, w, where):
+        t = {"where": where}
+        k = 4
+        atom_type = None
+        while k < len(w):
+            if w[k] == "atom_type":
+                atom_type = int(float(w[k + 1]))
+                k += 2
+            elif w[k] == "density" and w[k + 1] == "constant":
+                t["density"] = float(w[k + 2])
+                k += 3
+            elif w[k] == "radius":
+                t["radius"] = self._distribution(w[k + 1:], where, "radius")
+                k += 1
+            elif w[k] == "shape" and w[k + 1] == "constant":
+                t["shape"] = tuple(float(x) for x in w[k + 2:k + 5])
+                k += 5
+            elif w[k] == "blockiness" and w[k + 1] == "constant":
+                t["blockiness"] = tuple(float(x) for x in w[k + 2:k + 4])
+                k += 4
+            else:
+                k += 1
+        if atom_type is None:
+            raise DeckError("%s: particle template without atom_type" % where)
+        self.templates[w[1]] = atom_type
+        self.types.setdefault(atom_type, {}).update(t)
+
+    def _distribution(self, w, where, what):
+        if w[0] == "constant":
+            return float(w[1])
+        if w[0] in ("gaussian", "lognormal") and len(w) >= 4:
+            mu, sd = float(w[2]), float(w[3])
+            self.assumed.append("%s: %s %s: the mean plus 2 standard deviations, %.4g m" % (where, what, w[0], mu + 2 * sd))
+            return mu + 2.0 * sd
+        if w[0] == "uniform" and len(w) >= 4:
+            return max(float(w[2]), float(w[3]))
+        raise DeckError("%s: %s distribution '%s' is not one the advisor reads" % (where, what, " ".join(w[:4])))
+
+    def _set(self, w, where):
+        # set group G ... type/diameter/shape/blockiness/density
+        t = {"where": where}
+        k = 3
+        while k < len(w):
+            if w[k] == "diameter":
+                t["radius"] = 0.5 * float(w[k + 1]); k += 2
+            elif w[k] == "shape":
+                t["shape"] = tuple(float(x) for x in w[k + 1:k + 4]); k += 4
+            elif w[k] == "blockiness":
+                t["blockiness"] = tuple(float(x) for x in w[k + 1:k + 3]); k += 3
+            elif w[k] == "density":
+                t["density"] = float(w[k + 1]); k += 2
+            else:
+                k += 1
+        if len(t) > 1:
+            self.sets.append(t)
+
+
+# ------------------------------------------------------------ the scene
+
+def prop(deck, name, i, j=None, required=True, default=None):
+    """A per-type or per-type-pair property for types i (and j), 1-based."""
+    if name not in deck.props:
+        if required:
+            raise DeckError("the deck sets no %s (fix ID all property/global %s ...): the advisor needs it" % (name, name))
+        return default
+    kind, vals, where = deck.props[name]
+    try:
+        if kind == "peratomtype":
+            return vals[i - 1]
+        if kind == "peratomtypepair":
+            n = int(round(math.sqrt(len(vals))))
+            return vals[(i - 1) * n + ((j or i) - 1)]
+        if kind == "scalar":
+            return vals[0]
+    except IndexError:
+        raise DeckError("%s: %s has no value for type %d%s" % (where, name, i, "" if j is None else " and %d" % j))
+    raise DeckError("%s: %s given as %s, which the advisor does not read" % (where, name, kind))
+
+
+def region_box(deck, rid):
+    if rid not in deck.regions:
+        return None
+    style, args, where = deck.regions[rid]
+    if style == "block" and len(args) >= 6:
+        try:
+            return [float(x) for x in args[:6]]
+        except ValueError:
+            return None
+    if style == "cylinder" and len(args) >= 6:
+        ax, c1, c2, r, lo, hi = args[0], float(args[1]), float(args[2]), float(args[3]), float(args[4]), float(args[5])
+        if ax == "z":
+            return [c1 - r, c1 + r, c2 - r, c2 + r, lo, hi]
+    return None
+
+
+def scene_of(deck, opts):
+    """Types, their particles, the largest impact speed and where each came from."""
+    src = {}
+    sets = deck.sets
+    types = dict(deck.types)
+    if sets:   # `set group` lines give every created type the same values
+        for t in [c[0] for c in deck.created] or [1]:
+            for s in sets:
+                types.setdefault(t, {}).update(s)
+    if not types:
+        raise DeckError("the deck defines no particles the advisor can read (particletemplate/sphere, "
+                        "particletemplate/superquadric, or create_atoms with set ... diameter/shape)")
+    for t, d in types.items():
+        if "radius" not in d and "shape" not in d:
+            raise DeckError("%s: type %d has no radius or shape" % (d.get("where", "deck"), t))
+        if "density" not in d:
+            raise DeckError("%s: type %d has no density" % (d.get("where", "deck"), t))
+    g = deck.gravity[0] if deck.gravity else 0.0
+    src["g"] = deck.gravity[2] if deck.gravity else "no fix gravity: g = 0"
+    # fall height: from the top of the insertion (or creation) regions to the box bottom
+    bottom, top = None, None
+    if deck.box:
+        b = region_box(deck, deck.box[0])
+        if b:
+            bottom = b[4]
+    for ins in deck.inserts:
+        b = region_box(deck, ins["region"]) if ins["region"] else None
+        if b:
+            top = b[5] if top is None else max(top, b[5])
+    for (_, rid, _) in deck.created:
+        b = region_box(deck, rid) if rid else None
+        if b:
+            top = b[5] if top is None else max(top, b[5])
+    if bottom is None or top is None:
+        h = 0.0
+        deck.assumed.append("no box and insertion region the advisor can read: fall height 0")
+    else:
+        h = max(top - bottom, 0.0)
+    vin = max([math.sqrt(sum(x * x for x in ins["vel"])) for ins in deck.inserts] or [0.0])
+    v = math.sqrt(vin * vin + 2.0 * g * h)
+    src["v"] = "insertion speed %.3g m/s (%s) and free fall over %.3g m (box bottom to the top of the insertion region)" % (
+        vin, deck.inserts[0]["where"] if deck.inserts else "none", h)
+    if v <= 0.0:
+        v = 0.01
+        deck.assumed.append("no insertion speed and no fall: impact speed 0.01 m/s")
+    if not deck.dt:
+        raise DeckError("the deck sets no timestep")
+    return types, v, g, src
+
+
+def shape_of(d):
+    """(shape, blockiness) of a superquadric type, None for a sphere."""
+    if "shape" in d:
+        return d["shape"], d.get("blockiness", (2.0, 2.0))
+    return None
+
+
+def run_dclaw(dclaw, args):
+    p = subprocess.run([dclaw] + [str(a) for a in args], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise DeckError("dclaw %s: %s" % (args[0], p.stderr.strip()))
+    rows = list(csv.DictReader(io.StringIO(p.stdout)))
+    return {k: float(x) for k, x in rows[0].items()}
+
+
+def report_costs():
+    """Whole-run time over stock hertz + history from the project's report."""
+    path = os.path.join(HERE, "..", "doc", "report", "table.csv")
+    cost = {}
+    try:
+        for r in csv.DictReader(open(path)):
+            if r["run_ratio"]:
+                cost[(r["family"], r["law"])] = float(r["run_ratio"])
+    except OSError:
+        pass
+    pick = {"hertz_elliptic": ("superquadric", "hertz_elliptic (exact)"),
+            "gw_rough": ("rough", "tabulated GW law (gw_rough default)"),
+            "jkr_elliptic": ("adhesion", "jkr_elliptic (hint carried)"),
+            "cmd_tangential": ("tangential", "cmd_tangential"),
+            "tangential history": ("tangential", "stock tangential history")}
+    return {m: cost.get(k) for m, k in pick.items()}
+
+
+def fmt(x):
+    return "%.3g" % x
+
+
+def advise(deck, opts, out):
+    dclaw = opts.dclaw
+    types, v, g, src = scene_of(deck, opts)
+    dt, dt_where = deck.dt
+    costs = report_costs()
+    cost = lambda m: ("%.2fx" % costs[m]) if costs.get(m) else "n/a in the report"
+    tol = opts.tol
+    rows, warnings, measures = [], [], []
+    # contact kinds: every pair of types, and each type on the walls
+    kinds = []
+    tl = sorted(types)
+    for a in tl:
+        for b in tl:
+            if b >= a:
+                kinds.append((a, b))
+    if deck.walls:
+        wall_type = 1
+        for words, where in deck.walls:
+            if "type" in words:
+                wall_type = int(float(words[words.index("type") + 1]))
+        for a in tl:
+            kinds.append((a, "wall"))
+    model_line = " ".join(deck.pair[0][2:]) if deck.pair else "(no pair_style gran)"
+    for (a, b) in kinds:
+        da = types[a]
+        wall = b == "wall"
+        bt = wall_type if wall else b
+        db = None if wall else types[b]
+        sa = shape_of(da)
+        Ra = da.get("radius")
+        shape_rows = []
+        for (t, d) in [(a, da)] + ([] if wall else [(b, db)]):
+            s = shape_of(d)
+            if s:
+                (sx, sy, sz), (n1, n2) = s
+                row = run_dclaw(dclaw, ["shape", "--a", sx, "--b", sy, "--c", sz, "--n1", n1, "--n2", n2])
+                d["radius"] = row["R_eq"]
+                shape_rows.append((t, row))
+        E1, nu1 = prop(deck, "youngsModulus", a), prop(deck, "poissonsRatio", a)
+        E2, nu2 = prop(deck, "youngsModulus", bt), prop(deck, "poissonsRatio", bt)
+        mu = prop(deck, "coefficientFriction", a, bt, required=False, default=0.0)
+        w = prop(deck, "workOfAdhesion", a, bt, required=False, default=opts.w or 0.0)
+        sig_a = prop(deck, "surfaceRoughness", a, required=False, default=None)
+        sig_b = prop(deck, "surfaceRoughness", bt, required=False, default=None)
+        sigma = math.hypot(sig_a, sig_b) if sig_a is not None and sig_b is not None else (opts.sigma or 0.0)
+        mu_r = prop(deck, "roughnessMu", a, bt, required=False, default=4.0)
+        H = prop(deck, "hardness", a, required=False, default=None)
+        if H is not None and prop(deck, "hardness", bt, required=False, default=None) is not None:
+            H = min(H, prop(deck, "hardness", bt))
+        H = H if H is not None else (opts.H or 0.0)
+        args = ["scene", "--R1", da["radius"], "--R2", 0 if wall else db["radius"], "--E1", E1, "--E2", E2,
+                "--nu1", nu1, "--nu2", nu2, "--rho1", da["density"], "--rho2", da["density"] if wall else db["density"],
+                "--v", v, "--g", g, "--dt", dt, "--mu", mu, "--w", w, "--z0", opts.z0, "--sigma", sigma,
+                "--mu_rough", mu_r, "--H", H]
+        m = run_dclaw(dclaw, args)
+        kind = "types %d-%d" % (a, b) if not wall else "type %d on a wall" % a
+        m["kind"] = kind
+        measures.append(m)
+        R = lambda eff, meas, need, c, lines: rows.append((kind, eff, meas, need, c, lines))
+        # time step: the elastic Hertz collision at the largest speed integrated at the deck's dt
+        steps = max(1, int(m["t_c"] / dt))
+        hz = run_dclaw(dclaw, ["classical", "--law", 1, "--damping", 4, "--Estar", m["Estar"], "--R", m["R"],
+                               "--meff", m["meff"], "--v0", v, "--steps", steps, "--summary", 1])
+        t_err = abs(hz["Tc"] / hz["Tc_closed"] - 1.0)
+        e_err = abs(hz["e"] - 1.0)
+        m["duration_error"], m["restitution_error"] = t_err, e_err
+        ok = m["dt_over_T_rayleigh"] <= 0.2 and max(t_err, e_err) <= tol
+        R("time step", "dt %s s = %s Rayleigh times; %d steps per collision at %s m/s: duration off by %s, elastic "
+          "restitution by %s" % (fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps, fmt(v), fmt(t_err), fmt(e_err)),
+          "ok" if ok else "smaller dt", "-", "-" if ok else "timestep %s" % fmt(min(0.2 * m["T_rayleigh"], m["t_c"] / 50)))
+        if not ok:
+            warnings.append("%s (%s): dt = %s s is %s Rayleigh times (LIGGGHTS' limit 0.2) and integrates the fastest "
+                            "collision in %d steps, its duration off by %s and its elastic restitution by %s (tolerance "
+                            "%s)" % (kind, dt_where, fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps, fmt(t_err),
+                                     fmt(e_err), fmt(tol)))
+        # Hertz range
+        R("Hertz range", "a/R at impact %s (Fessler-Ollerton: below 0.5)" % fmt(m["fessler"]),
+          "ok" if m["fessler"] <= 0.5 else "beyond Hertz", "-", "-")
+        if m["fessler"] > 0.5:
+            warnings.append("%s: the impact's contact radius is %s of the particle radius: beyond Hertz's range "
+                            "(0.5, Fessler-Ollerton); a softer law does not fix it, a stiffer material or slower "
+                            "impact does" % (kind, fmt(m["fessler"])))
+        # shape
+        if shape_rows:
+            err = max(r["err_pair_max" if not wall else "err_wall_max"] for _, r in shape_rows)
+            rms = max(r["err_pair_rms" if not wall else "err_wall_rms"] for _, r in shape_rows)
+            need = "hertz_elliptic" if err > tol else "hertz (volume-equivalent radius)"
+            R("shape", "one-radius force error max %s, rms %s" % (fmt(err), fmt(rms)), need,
+              cost("hertz_elliptic") if err > tol else "1x",
+              "pair_style gran model hertz_elliptic ... surface superquadric" if err > tol else "-")
+        else:
+            R("shape", "spheres: 0", "hertz", "1x", "-")
+        # plasticity
+        if H > 0:
+            pr = m["plastic_ratio"]
+            change = 1.0 - m["e_plastic"]
+            need = "jamari_ep" if change > tol else "elastic law"
+            R("plasticity", "delta_max/delta_n1 %s; restitution from plasticity alone %s" % (fmt(pr), fmt(m["e_plastic"])),
+              need, cost("jamari_ep") if change > tol else "1x",
+              "model jamari_ep; fix ... property/global hardness peratomtype %s" % fmt(H) if change > tol else "-")
+        else:
+            R("plasticity", "not assessed: no hardness in the deck (give --H)", "-", "-", "-")
+        # adhesion
+        if w > 0:
+            tab = m["tabor"]
+            po_w = m["pulloff_over_weight"]
+            need = "elastic law"
+            if po_w > tol or m["pulloff_over_F_max"] > tol:
+                need = "jkr_elliptic" if tab >= 5 else "jkr_elliptic (Tabor %s < 5: DMT-like, JKR overestimates less than x1.33 on pull-off)" % fmt(tab)
+            R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force" % (
+                fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"])), need,
+              cost("jkr_elliptic") if need != "elastic law" else "1x",
+              "model jkr_elliptic; fix ... property/global workOfAdhesion peratomtypepair ..." if need != "elastic law" else "-")
+        else:
+            R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
+        # roughness
+        if sigma > 0:
+            ch = max(abs(m["rough_force_rest"]), abs(m["rough_force_max"]))
+            need = "gw_rough" if ch > tol else "smooth law"
+            R("roughness", "sigma/delta %s at rest, %s at impact; rough force / Hertz - 1: %s at rest, %s at impact" % (
+                fmt(m["sigma_over_delta_rest"]), fmt(m["sigma_over_delta_max"]), fmt(m["rough_force_rest"]),
+                fmt(m["rough_force_max"])), need, cost("gw_rough") if ch > tol else "1x",
+              "model gw_rough; fix ... property/global surfaceRoughness peratomtype ..." if ch > tol else "-")
+        else:
+            R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
+        # tangential memory
+        if mu > 0:
+            sr = m["slip_ratio"]
+            # the part of an impact's sliding path spent in partial slip, where the
+            # spring-sliding force differs from Cattaneo-Mindlin's by up to the error
+            change = m["tangential_error"] * min(1.0, 1.0 / sr) if sr > 0 else m["tangential_error"]
+            need = "cmd_tangential" if change > tol else "tangential history"
+            R("tangential memory", "slip distance %s m; one impact moves %s slip distances; spring-sliding error %s "
+              "of mu F on the partial-slip part" % (fmt(m["slip_distance"]), fmt(sr), fmt(m["tangential_error"])),
+              need, cost(need), "tangential %s" % need.split()[-1] if need == "cmd_tangential" else "tangential history")
+        else:
+            R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
+        R("rolling", "not assessed (doc/advisor.md)", "-", "-", "-")
+    # ---- print
+    out.write("dcadvise: %s\n" % opts.deck)
+    out.write("pair model: %s (%s)\n" % (model_line, deck.pair[1] if deck.pair else "-"))
+    out.write("scene values:\n")
+    out.write("  largest impact speed %s m/s: %s\n" % (fmt(v), src["v"]))
+    out.write("  gravity %s m/s^2 (%s); time step %s s (%s)\n" % (fmt(g), src["g"], fmt(dt), dt_where))
+    for t in sorted(types):
+        d = types[t]
+        desc = ("superquadric %s blockiness %s" % (" x ".join(fmt(x) for x in d["shape"]),
+                " ".join(fmt(x) for x in d.get("blockiness", (2, 2))))) if "shape" in d else "sphere"
+        out.write("  type %d: %s, radius %s m%s, density %s kg/m^3 (%s)\n" % (
+            t, desc, fmt(d["radius"]), " (volume-equivalent)" if "shape" in d else "", fmt(d["density"]), d.get("where", "-")))
+    for mm in measures:
+        out.write("  %s: overlap at rest %s m, at impact %s m; contact radius at impact %s m; collision %s s\n" % (
+            mm["kind"], fmt(mm["delta_rest"]), fmt(mm["delta_max"]), fmt(mm["a_max"]), fmt(mm["t_c"])))
+    out.write("\nper contact, tolerance %s (the force or restitution change a richer law may make):\n" % fmt(tol))
+    head = ("effect", "needs", "cost", "measure")
+    for kind in [mm["kind"] for mm in measures]:
+        sub = [(r[1], r[3], r[4], r[2]) for r in rows if r[0] == kind]
+        wd = [max(len(x[k]) for x in sub + [head]) for k in range(3)]
+        out.write("\n%s\n" % kind)
+        for r in [head] + sub:
+            out.write("  " + "  ".join(r[k].ljust(wd[k]) for k in range(3)) + "  " + r[3] + "\n")
+    lines = sorted({r[5] for r in rows if r[5] != "-"})
+    if lines:
+        out.write("\ndeck lines for what the scene needs:\n")
+        for ln in lines:
+            out.write("  %s\n" % ln)
+    if deck.assumed:
+        out.write("\nassumed:\n")
+        for a in deck.assumed:
+            out.write("  - %s\n" % a)
+    if warnings:
+        out.write("\nwarnings:\n")
+        for wng in warnings:
+            out.write("  - %s\n" % wng)
+    if opts.csv:
+        keys = ["kind"] + [k for k in measures[0] if k != "kind"]
+        with open(opts.csv, "w", newline="") as f:
+            wr = csv.DictWriter(f, fieldnames=keys)
+            wr.writeheader()
+            for mm in measures:
+                wr.writerow(mm)
+    return rows, measures
+
+
+class Opts:
+    pass
+
+
+def parse_args(argv):
+    o = Opts()
+    o.deck, o.tol, o.w, o.sigma, o.H, o.z0, o.csv = None, 0.05, None, None, None, 0.4e-9, None
+    o.dclaw = os.environ.get("DCLAW", os.path.join(HERE, "..", "build", "c_core", "dclaw"))
+    o.vars = []
+    i = 0
+    floats = {"--tol": "tol", "--w": "w", "--sigma": "sigma", "--H": "H", "--z0": "z0"}
+    while i < len(argv):
+        a = argv[i]
+        if a in ("-h", "--help"):
+            print(__doc__)
+            sys.exit(0)
+        if a in ("-var", "-v"):
+            name = argv[i + 1] if i + 1 < len(argv) else None
+            vals = []
+            i += 2
+            while i < len(argv) and not argv[i].startswith("-"):
+                vals.append(argv[i])
+                i += 1
+            if not name or not vals:
+                raise DeckError("-var needs a name and a value")
+            o.vars.append((name, vals))
+            continue
+        if a in floats:
+            if i + 1 >= len(argv):
+                raise DeckError("%s needs a value" % a)
+            try:
+                setattr(o, floats[a], float(argv[i + 1]))
+            except ValueError:
+                raise DeckError("%s: '%s' is not a number" % (a, argv[i + 1]))
+            i += 2
+            continue
+        if a in ("--csv", "--dclaw"):
+            setattr(o, a[2:], argv[i + 1])
+            i += 2
+            continue
+        if a.startswith("-"):
+            raise DeckError("unknown option %s (dcadvise.py --help)" % a)
+        if o.deck:
+            raise DeckError("one deck only (got %s and %s)" % (o.deck, a))
+        o.deck = a
+        i += 1
+    if not o.deck:
+        raise DeckError("usage: dcadvise.py DECK [-var NAME VALUE ...] [--tol T] [--w W] [--sigma S] [--H H] [--z0 Z] [--csv FILE]")
+    if not (o.tol > 0):
+        raise DeckError("--tol must be > 0")
+    return o
+
+
+def main(argv):
+    try:
+        opts = parse_args(argv)
+        deck = Deck(opts.deck, opts.vars)
+        advise(deck, opts, sys.stdout)
+    except DeckError as e:
+        sys.stderr.write("dcadvise: %s\n" % e)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
