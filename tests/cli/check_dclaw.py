@@ -146,7 +146,7 @@ check(rc == 0 and laws == sorted(laws) and {"gw_rough", "hertz_elliptic", "jkr_e
       "dclaw --help: exit %d, laws %s" % (rc, laws))
 for law in laws:
     rc, out, _ = run([law, "--help"])
-    check(rc == 0 and out.startswith("usage: dclaw " + law) and "1000000" in out, "dclaw %s --help" % law)
+    check(rc == 0 and out.startswith("usage: dclaw " + law) and "\n  --" in out, "dclaw %s --help" % law)
 
 # Spheres (relative radii R1 = R2 = R): Hertz F = 4/3 E* R^1/2 delta^3/2,
 # area pi R delta, stiffness 2 E* (R delta)^1/2; JKR pull-off 3/2 pi w R and
@@ -355,5 +355,72 @@ for K0, N, X, T_A, W, Tv in crow("wbloop"):
     check(rc == 0 and near(got.get("F_amp", 0), T_A) and near(got.get("energy_last_cycle", 0), W),
           "classical_tangential incremental stable loop K0 %g X %g: F_amp %r, energy %r; reference %r, %r (%s)"
           % (K0, X, got.get("F_amp"), got.get("energy_last_cycle"), T_A, W, err.strip()))
+
+# scene: the Hertz impact, rest and time scales against the closed forms
+# computed here; the elastic-plastic restitution of a sphere on a wall
+# against the jamari_ep impact references (tests/reference/jamari_impact.csv,
+# energy balance in mpmath); Rayleigh time against the root of Rayleigh's
+# equation (scene_rayleigh.csv). shape: ellipsoids against scene_shape.csv.
+def row1(args):
+    rc, out, err = run(args)
+    if rc != 0:
+        return rc, {}, err
+    head, rows = csv(out)
+    return rc, dict(zip(head, rows[0])), err
+
+
+E1, nu1, R1, R2, rho1, v1, g1, w1, mu1 = 5e6, 0.3, 1.5e-3, 2.5e-3, 2500.0, 0.7, 9.81, 0.05, 0.5
+rc, got, err = row1(["scene", "--R1", repr(R1), "--R2", repr(R2), "--E1", repr(E1), "--E2", repr(E1), "--nu1", repr(nu1),
+                     "--nu2", repr(nu1), "--rho1", repr(rho1), "--rho2", repr(rho1), "--v", repr(v1), "--g", repr(g1),
+                     "--dt", "1e-6", "--w", repr(w1), "--mu", repr(mu1)])
+Es = E1 / (2 * (1 - nu1 ** 2))
+Gs1 = E1 / (2 * (1 + nu1)) / (2 * (2 - nu1))
+Rr = R1 * R2 / (R1 + R2)
+m1, m2 = rho1 * 4 * math.pi / 3 * R1 ** 3, rho1 * 4 * math.pi / 3 * R2 ** 3
+me = m1 * m2 / (m1 + m2)
+K = 4 / 3 * Es * math.sqrt(Rr)
+dmax = (15 * me * v1 ** 2 / (16 * Es * math.sqrt(Rr))) ** 0.4    # 1/2 m v^2 = 2/5 K delta^5/2
+Fmax = K * dmax ** 1.5
+drest = (m1 * g1 / K) ** (2 / 3)
+want = {"R": Rr, "Estar": Es, "Gstar": Gs1, "meff": me, "weight": m1 * g1, "delta_max": dmax, "F_max": Fmax,
+        "a_max": math.sqrt(Rr * dmax), "delta_rest": drest, "a_rest": math.sqrt(Rr * drest),
+        "t_c": 2.9432 * dmax / v1 * 1.0,   # Hertz: t_c = 2.9432 delta_max / v (Johnson, Contact Mechanics, 11.24)
+        "tabor": (Rr * w1 ** 2 / (Es ** 2 * 0.4e-9 ** 3)) ** (1 / 3), "pulloff": 1.5 * math.pi * w1 * Rr,
+        "slip_distance": 3 * mu1 * Fmax / (16 * Gs1 * math.sqrt(Rr * dmax))}
+for k, x in want.items():
+    tol = 2e-4 if k == "t_c" else 1e-12
+    check(rc == 0 and abs(got.get(k, 0) / x - 1) <= tol, "scene %s: %r, closed form %r (%s)" % (k, got.get(k), x, err.strip()))
+xi = {float(l.split(",")[0]): float(l.split(",")[1]) for l in open(os.path.join(os.path.dirname(REF), "scene_rayleigh.csv"))
+      if not l.startswith("#")}
+TR = math.pi * R1 / (xi[0.3] * math.sqrt(E1 / (2 * (1 + nu1)) / rho1))
+check(rc == 0 and abs(got.get("T_rayleigh", 0) / TR - 1) < 3e-3, "scene T_rayleigh %r, Rayleigh root %r" % (got.get("T_rayleigh"), TR))
+check(rc == 0 and abs(got.get("tangential_error", 0) - 3 ** -1.5) < 2e-3,
+      "scene tangential_error %r: springSliding against Cattaneo-Mindlin peaks at (1/3)^3/2 mu F" % got.get("tangential_error"))
+JREF = os.path.join(os.path.dirname(REF), "jamari_impact.csv")
+jrows = [l.strip().split(",") for l in open(JREF) if l.startswith("sphere,")]
+onset = next(l.strip().split(",") for l in open(JREF) if l.startswith("onset,sphere,"))
+for shape, v, dm, dres, e in jrows:
+    if float(v) < 0.05 or float(v) > 10:
+        continue
+    rc, got, err = row1(["scene", "--R1", "0.001", "--R2", "0", "--E1", "7e10", "--E2", "7e10", "--nu1", "0.3", "--nu2", "0.3",
+                         "--rho1", "2700", "--v", v, "--dt", "1e-9", "--H", "3e8"])
+    ok = rc == 0 and abs(got["e_plastic"] - float(e)) < 1e-3 and abs(got["delta_n1"] / float(onset[2]) - 1) < 1e-12 and \
+        abs(got["plastic_ratio"] * got["delta_n1"] / float(dm) - 1) < 1e-3
+    check(ok, "scene --H, sphere on a wall at %s m/s: e %r, delta_max %r; reference %s, %s (%s)"
+          % (v, got.get("e_plastic"), got.get("plastic_ratio", 0) * got.get("delta_n1", 0), e, dm, err.strip()))
+for bad, keys in [(["--R1", "-1"], ["R1"]), (["--nu1", "0.7"], ["nu1"]), (["--H", "x"], ["H"]), (["--mu_rough", "60", "--sigma", "1e-6"], ["mu_rough"])]:
+    rc, out, err = run(["scene"] + bad)
+    check(rc == 2 and all("--" + k in err for k in keys), "scene %s: exit %d, %s" % (" ".join(bad), rc, err.strip()))
+SREF = os.path.join(os.path.dirname(REF), "scene_shape.csv")
+for l in open(SREF):
+    if l.startswith("#"):
+        continue
+    a, b, c, mm, Req, pmax, prms, wmax, wrms = [float(x) for x in l.split(",")]
+    rc, got, err = row1(["shape", "--a", repr(a), "--b", repr(b), "--c", repr(c), "--n1", "2", "--n2", "2", "--m", str(int(mm))])
+    ok = rc == 0 and all(abs(got[k] / x - 1) < 1e-9 for k, x in
+                         [("R_eq", Req), ("err_pair_max", pmax), ("err_pair_rms", prms), ("err_wall_max", wmax), ("err_wall_rms", wrms)])
+    check(ok, "shape ellipsoid %g %g %g: %r (%s)" % (a, b, c, got, err.strip()))
+rc, out, err = run(["shape", "--a", "1e-3", "--b", "1e-3", "--c", "1e-3", "--n1", "1.5", "--n2", "2"])
+check(rc == 2 and "--n1" in err, "shape --n1 1.5: exit %d, %s" % (rc, err.strip()))
 
 finish()
