@@ -69,7 +69,7 @@ class Deck:
             self.vars[name] = ("index", values)
             self.locked.add(name)
         self.props = {}       # property name -> (style, values, where)
-        self.types = {}       # atom type -> dict(radius, shape, blockiness, density, where)
+        self.particles = []   # particle classes: dict(type, radius, shape, blockiness, density, where)
         self.templates = {}   # template id -> atom type
         self.regions = {}     # region id -> (style, args, where)
         self.box = None       # (region id, where)
@@ -185,8 +185,10 @@ class Deck:
             return
         words0 = line.split()
         if words0[0] == "variable" and len(words0) >= 3:
-            # the value of an equal-style variable is evaluated on use, as LIGGGHTS does
-            self._variable(shlex.split(line), where)
+            # $-references substituted now (outside quotes), an equal-style
+            # expression evaluated on use, as LIGGGHTS does
+            if words0[1] not in self.locked:
+                self._variable(shlex.split(self._substitute(line, where)), where)
             return
         if words0[0] not in READ:
             return   # not read: its variables need no value (thermo keywords, per-atom ones)
@@ -291,7 +293,8 @@ class Deck:
         if atom_type is None:
             raise DeckError("%s: particle template without atom_type" % where)
         self.templates[w[1]] = atom_type
-        self.types.setdefault(atom_type, {}).update(t)
+        t["type"] = atom_type
+        self.particles.append(t)
 
     def _distribution(self, w, where, what):
         if w[0] == "constant":
@@ -364,20 +367,27 @@ def region_box(deck, rid):
 def scene_of(deck, opts):
     """Types, their particles, the largest impact speed and where each came from."""
     src = {}
-    sets = deck.sets
-    types = dict(deck.types)
-    if sets:   # `set group` lines give every created type the same values
-        for t in [c[0] for c in deck.created] or [1]:
-            for s in sets:
-                types.setdefault(t, {}).update(s)
-    if not types:
+    parts = [dict(p) for p in deck.particles]
+    if deck.sets:   # `set group` lines give every created type the same values
+        for t in sorted({c[0] for c in deck.created} or {1}):
+            d = {"type": t}
+            for s in deck.sets:
+                d.update(s)
+            parts.append(d)
+    if not parts:
         raise DeckError("the deck defines no particles the advisor can read (particletemplate/sphere, "
                         "particletemplate/superquadric, or create_atoms with set ... diameter/shape)")
-    for t, d in types.items():
+    for d in parts:
         if "radius" not in d and "shape" not in d:
-            raise DeckError("%s: type %d has no radius or shape" % (d.get("where", "deck"), t))
+            raise DeckError("%s: type %d has no radius or shape" % (d.get("where", "deck"), d["type"]))
         if "density" not in d:
-            raise DeckError("%s: type %d has no density" % (d.get("where", "deck"), t))
+            raise DeckError("%s: type %d has no density" % (d.get("where", "deck"), d["type"]))
+    # a type with several templates: each its own class, named by its size
+    for d in parts:
+        same = [e for e in parts if e["type"] == d["type"]]
+        size = d["radius"] if "radius" in d else max(d["shape"])
+        d["label"] = "type %d" % d["type"] + (" (%s %s m)" % ("radius" if "radius" in d else "semi-axis", fmt(size))
+                                             if len(same) > 1 else "")
     g = deck.gravity[0] if deck.gravity else 0.0
     src["g"] = deck.gravity[2] if deck.gravity else "no fix gravity: g = 0"
     # fall height: from the top of the insertion (or creation) regions to the box bottom
@@ -408,7 +418,7 @@ def scene_of(deck, opts):
         deck.assumed.append("no insertion speed and no fall: impact speed 0.01 m/s")
     if not deck.dt:
         raise DeckError("the deck sets no timestep")
-    return types, v, g, src
+    return parts, v, g, src
 
 
 def shape_of(d):
@@ -450,36 +460,29 @@ def fmt(x):
 
 def advise(deck, opts, out):
     dclaw = opts.dclaw
-    types, v, g, src = scene_of(deck, opts)
+    parts, v, g, src = scene_of(deck, opts)
     dt, dt_where = deck.dt
     costs = report_costs()
     cost = lambda m: ("%.2fx" % costs[m]) if costs.get(m) else "n/a in the report"
     tol = opts.tol
     rows, warnings, measures = [], [], []
-    # contact kinds: every pair of types, and each type on the walls
-    kinds = []
-    tl = sorted(types)
-    for a in tl:
-        for b in tl:
-            if b >= a:
-                kinds.append((a, b))
+    # contact kinds: every pair of particle classes, and each on the walls
+    kinds = [(i, j) for i in range(len(parts)) for j in range(i, len(parts))]
+    wall_type = 1
     if deck.walls:
-        wall_type = 1
         for words, where in deck.walls:
             if "type" in words:
                 wall_type = int(float(words[words.index("type") + 1]))
-        for a in tl:
-            kinds.append((a, "wall"))
+        kinds += [(i, "wall") for i in range(len(parts))]
     model_line = " ".join(deck.pair[0][2:]) if deck.pair else "(no pair_style gran)"
-    for (a, b) in kinds:
-        da = types[a]
-        wall = b == "wall"
-        bt = wall_type if wall else b
-        db = None if wall else types[b]
-        sa = shape_of(da)
-        Ra = da.get("radius")
+    for (ia, ib) in kinds:
+        da = parts[ia]
+        wall = ib == "wall"
+        db = None if wall else parts[ib]
+        a = da["type"]
+        bt = wall_type if wall else db["type"]
         shape_rows = []
-        for (t, d) in [(a, da)] + ([] if wall else [(b, db)]):
+        for (t, d) in [(a, da)] + ([] if wall else [(bt, db)]):
             s = shape_of(d)
             if s:
                 (sx, sy, sz), (n1, n2) = s
@@ -503,7 +506,8 @@ def advise(deck, opts, out):
                 "--v", v, "--g", g, "--dt", dt, "--mu", mu, "--w", w, "--z0", opts.z0, "--sigma", sigma,
                 "--mu_rough", mu_r, "--H", H]
         m = run_dclaw(dclaw, args)
-        kind = "types %d-%d" % (a, b) if not wall else "type %d on a wall" % a
+        m.update({"in_nu": nu1, "in_sigma": sigma, "in_w": w, "in_H": H, "in_mu_rough": mu_r, "in_mu": mu, "in_v": v})
+        kind = "%s on a wall" % da["label"] if wall else "%s with %s" % (da["label"], db["label"])
         m["kind"] = kind
         measures.append(m)
         R = lambda eff, meas, need, c, lines: rows.append((kind, eff, meas, need, c, lines))
@@ -592,12 +596,12 @@ def advise(deck, opts, out):
     out.write("scene values:\n")
     out.write("  largest impact speed %s m/s: %s\n" % (fmt(v), src["v"]))
     out.write("  gravity %s m/s^2 (%s); time step %s s (%s)\n" % (fmt(g), src["g"], fmt(dt), dt_where))
-    for t in sorted(types):
-        d = types[t]
+    for d in parts:
         desc = ("superquadric %s blockiness %s" % (" x ".join(fmt(x) for x in d["shape"]),
                 " ".join(fmt(x) for x in d.get("blockiness", (2, 2))))) if "shape" in d else "sphere"
-        out.write("  type %d: %s, radius %s m%s, density %s kg/m^3 (%s)\n" % (
-            t, desc, fmt(d["radius"]), " (volume-equivalent)" if "shape" in d else "", fmt(d["density"]), d.get("where", "-")))
+        out.write("  %s: %s, radius %s m%s, density %s kg/m^3 (%s)\n" % (
+            d["label"], desc, fmt(d["radius"]), " (volume-equivalent)" if "shape" in d else "", fmt(d["density"]),
+            d.get("where", "-")))
     for mm in measures:
         out.write("  %s: overlap at rest %s m, at impact %s m; contact radius at impact %s m; collision %s s\n" % (
             mm["kind"], fmt(mm["delta_rest"]), fmt(mm["delta_max"]), fmt(mm["a_max"]), fmt(mm["t_c"])))
@@ -629,7 +633,7 @@ def advise(deck, opts, out):
             wr.writeheader()
             for mm in measures:
                 wr.writerow(mm)
-    return rows, measures
+    return rows, measures, parts, v
 
 
 class Opts:

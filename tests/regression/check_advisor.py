@@ -1,0 +1,228 @@
+#!/usr/bin/env python3
+"""The advisor (tools/dcadvise.py) checked against runs, not by assertion.
+
+For each scene (the project's examples, three of LIGGGHTS' own tutorials,
+and scenes built on both sides of each threshold), the advisor reads the
+deck; then, for each effect it predicts a change for, a probe of the
+scene's contact with the wall (inputs/advisor, inputs/advisor_shape: the
+scene's particle, material and speed) is run with the plain model and with
+the richer one, and the measured change must
+  - lie on the side of the tolerance the advisor said (a richer law needed
+    or not), and
+  - be within a factor 2 of the predicted change (where either exceeds a
+    quarter of the tolerance; below that both must be below the tolerance).
+Effects and probes:
+  plasticity  restitution of a head-on impact at the scene's largest speed,
+              elastic against elastic-plastic (in.probe_impact);
+  adhesion    pull-off force from the wall, none against JKR
+              (in.probe_pulloff), as a fraction of the weight for the side;
+  roughness   the wall force at the overlap at rest, smooth against rough
+              (in.probe_static);
+  shape       the wall force of 24 superquadrics in random orientations at
+              equal overlap, one radius against the curvatures
+              (in.probe_shape): max and rms of F_1/F - 1.
+Writes advisor_runs.csv (scene, effect, predicted, measured) into the work
+folder; the table in doc/advisor.md is this file."""
+import csv
+import importlib.util
+import io
+import math
+import os
+import random
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import regress  # noqa: E402
+
+ROOT = regress.ROOT
+spec = importlib.util.spec_from_file_location("dcadvise", os.path.join(ROOT, "tools", "dcadvise.py"))
+dcadvise = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(dcadvise)
+TUT = os.path.join(ROOT, ".deps", "liggghts-3.8.0", "examples", "LIGGGHTS", "Tutorials_public")
+SCENE = os.path.join(ROOT, "inputs", "advisor", "in.scene_drop")
+TOL = 0.05
+
+# (name, deck, -var pairs, advisor options, effects run)
+SCENES = [
+    ("example superquadric_settling", os.path.join(ROOT, "examples", "superquadric_settling", "in.superquadric_settling"),
+     [], {}, ["shape"]),
+    ("example rough_packing, sigma_r 0.001", os.path.join(ROOT, "examples", "rough_packing", "in.rough_packing"),
+     [("sigma_r", "0.001")], {}, ["roughness"]),
+    ("example adhesive_settling", os.path.join(ROOT, "examples", "adhesive_settling", "in.adhesive_settling"), [], {},
+     ["adhesion"]),
+    ("example rough_cohesive_powder", os.path.join(ROOT, "examples", "rough_cohesive_powder", "in.rough_cohesive_powder"),
+     [], {}, ["roughness", "adhesion"]),
+    ("tutorial packing, hardness 2e4 Pa", os.path.join(TUT, "packing", "in.packing"), [], {"H": 2e4}, ["plasticity"]),
+    ("tutorial cohesion, w 0.01 J/m^2", os.path.join(TUT, "cohesion", "in.cohesion"), [], {"w": 0.01}, ["adhesion"]),
+    ("tutorial conveyor, sigma 50 um", os.path.join(TUT, "conveyor", "in.conveyor"), [], {"sigma": 5e-5}, ["roughness"]),
+    ("drop: hard, below yield", SCENE, [("H", "1e9")], {}, ["plasticity"]),
+    ("drop: near yield", SCENE, [("H", "3e7")], {}, ["plasticity"]),
+    ("drop: soft, beyond yield", SCENE, [("H", "1e7")], {}, ["plasticity"]),
+    ("drop: weak adhesion", SCENE, [("w", "1e-5")], {}, ["adhesion"]),
+    ("drop: strong adhesion", SCENE, [("w", "0.05")], {}, ["adhesion"]),
+    ("drop: smooth", SCENE, [("sigma", "1e-9")], {}, ["roughness"]),
+    ("drop: rough", SCENE, [("sigma", "2e-6")], {}, ["roughness"]),
+]
+
+
+def advise(deck, variables, options):
+    o = dcadvise.parse_args([deck] + sum([["-var", k, v] for k, v in variables], []) +
+                            sum([["--%s" % k, repr(v)] for k, v in options.items()], []))
+    o.dclaw = regress.DCLAW
+    d = dcadvise.Deck(deck, o.vars)
+    rows, measures, parts, v = dcadvise.advise(d, o, io.StringIO())
+    return d, o, rows, measures, parts, v
+
+
+def probe(deck, work, tag, variables):
+    regress.run(deck, work, variables=dict(variables, dir=os.path.dirname(deck)), tag=tag)
+    return regress.table(os.path.join(work, "probe.txt"))
+
+
+def material(m, part):
+    """The probe's variables: one type for the particle and the wall, with the
+    pair's E* (nu of the particle), combined roughness, w, hardness and mu as
+    the advisor took them for the wall contact."""
+    nu = m["in_nu"]
+    return {"R": part["radius"], "rho": part["density"], "E": 2.0 * (1.0 - nu * nu) * m["Estar"], "nu": nu,
+            "H": m["in_H"] if m["in_H"] > 0 else 1e30, "w": m["in_w"], "sigma": m["in_sigma"] / math.sqrt(2.0),
+            "mu_r": m["in_mu_rough"]}
+
+
+def run_plasticity(work, mat, m, v):
+    dt = m["t_c"] / 4000.0
+    steps = int(3 * m["t_c"] / dt)
+    e = {}
+    for model in ("hertz_elliptic", "jamari_ep"):
+        rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_impact"), work, model,
+                     dict(mat, model=model, v=repr(v), dt=repr(dt), steps=steps))
+        e[model] = rows[-1][2] / v
+    return 1.0 - m["e_plastic"], e["hertz_elliptic"] - e["jamari_ep"]
+
+
+def run_adhesion(work, mat, m):
+    # pressed to the overlap of the contact at rest (at least a tenth of JKR's
+    # separation overlap), then pulled back at a speed far below the contact's
+    dt = m["t_c"] / 2000.0
+    delta = max(m["delta_rest"], 1e-9)
+    u = delta / (2000 * dt)
+    F = {}
+    for model in ("hertz_elliptic", "jkr_elliptic"):
+        rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_pulloff"), work, model,
+                     dict(mat, model=model, delta=repr(delta), u=repr(u), dt=repr(dt), steps=20000))
+        F[model] = max(max(-r[3] for r in rows), 0.0)
+    meas = (F["jkr_elliptic"] - F["hertz_elliptic"]) / m["weight"]
+    return m["pulloff_over_weight"], meas
+
+
+def run_roughness(work, mat, m):
+    F = {}
+    for model in ("hertz_elliptic", "gw_rough"):
+        rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_static"), work, model,
+                     dict(mat, model=model, delta=repr(m["delta_rest"]), dt="1e-9"))
+        F[model] = rows[-1][3]
+    return abs(m["rough_force_rest"]), abs(F["gw_rough"] / F["hertz_elliptic"] - 1.0)
+
+
+def support(shape, bl, Rm):
+    """Lowest world z of the superquadric turned by the rotation matrix Rm (equal blockiness: exact)."""
+    n = bl[0]
+    q = n / (n - 1.0)
+    d = [-Rm[2][k] for k in range(3)]   # body frame of world -z
+    return (sum(abs(shape[k] * d[k]) ** q for k in range(3))) ** (1.0 / q)
+
+
+def run_shape(work, m, part, rng):
+    """max and rms over random orientations of |F_hertz / F_hertz_elliptic - 1| at equal overlap"""
+    sh, bl = part["shape"], part.get("blockiness", (2.0, 2.0))
+    if bl[0] != bl[1]:
+        raise SystemExit("FAIL the shape probe takes equal blockiness (got %s)" % (bl,))
+    L = max(sh)
+    lines, N = [], 24
+    for i in range(N):
+        ax = [rng.gauss(0, 1) for _ in range(3)]
+        al = math.sqrt(sum(x * x for x in ax))
+        ax = [x / al for x in ax]
+        th = rng.uniform(0, math.pi)
+        c, s = math.cos(th), math.sin(th)
+        x, y, z = ax
+        Rm = [[c + x * x * (1 - c), x * y * (1 - c) - z * s, x * z * (1 - c) + y * s],
+              [y * x * (1 - c) + z * s, c + y * y * (1 - c), y * z * (1 - c) - x * s],
+              [z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)]]
+        h = support(sh, bl, Rm)
+        lines.append("create_atoms 1 single %r 0 %r units box" % (3 * L * i, h - 1e-3 * L))
+        lines.append("set atom %d shape %r %r %r blockiness %r %r density %r" % (i + 1, sh[0], sh[1], sh[2], bl[0], bl[1],
+                                                                                  part["density"]))
+        lines.append("set atom %d quat %r %r %r %r" % (i + 1, x, y, z, math.degrees(th)))
+    os.makedirs(work, exist_ok=True)
+    atoms = os.path.join(work, "atoms.inc")
+    open(atoms, "w").write("\n".join(lines) + "\n")
+    nu = m["in_nu"]
+    F = {}
+    for model in ("hertz", "hertz_elliptic"):
+        regress.run(os.path.join(ROOT, "inputs", "advisor_shape", "in.probe_shape"), work, tag=model,
+                    variables={"dir": os.path.join(ROOT, "inputs", "advisor_shape"), "model": model, "atoms": atoms,
+                               "E": 2.0 * (1.0 - nu * nu) * m["Estar"], "nu": nu,
+                               "xlo": -2 * L, "xhi": 3 * L * N, "ylo": -2 * L, "yhi": 2 * L, "zlo": -L, "zhi": 3 * L,
+                               "skin": 0.2 * L})
+        rows = [l.split() for l in open(os.path.join(work, "probe.txt")).read().split("ITEM: ATOMS")[1].splitlines()[1:]]
+        F[model] = {int(r[0]): float(r[1]) for r in rows if r}
+    err = [abs(F["hertz"][i] / F["hertz_elliptic"][i] - 1.0) for i in F["hertz"] if F["hertz_elliptic"].get(i, 0) > 0]
+    if len(err) != N:
+        raise SystemExit("FAIL shape probe: %d of %d superquadrics touched the wall in both runs" % (len(err), N))
+    return max(err), math.sqrt(sum(e * e for e in err) / N)
+
+
+def main():
+    work, update, c = regress.start()
+    rng = random.Random(20261205)
+    out = []
+    for name, deck, variables, options, effects in SCENES:
+        d, o, rows, measures, parts, v = advise(deck, variables, options)
+        # the wall contact of the first particle class (the probes' contact)
+        part = parts[0]
+        m = next(mm for mm in measures if mm["kind"] == "%s on a wall" % part["label"])
+        needs = {r[1]: r[3] for r in rows if r[0] == m["kind"]}
+        mat = material(m, part)
+        wd = os.path.join(work, name.split(",")[0].replace(" ", "_").replace(":", ""))
+        for eff in effects:
+            if eff == "plasticity":
+                pred, meas = run_plasticity(wd, mat, m, v)
+                richer = needs[eff] == "jamari_ep"
+            elif eff == "adhesion":
+                pred, meas = run_adhesion(wd, mat, m)
+                richer = needs[eff].startswith("jkr_elliptic")
+            elif eff == "roughness":
+                pred, meas = run_roughness(wd, mat, m)
+                richer = needs[eff] == "gw_rough"
+            elif eff == "shape":
+                sm = run_dclaw_shape(part)
+                pred, pred_rms = sm["err_wall_max"], sm["err_wall_rms"]
+                meas, meas_rms = run_shape(wd, m, part, rng)
+                richer = needs[eff] == "hertz_elliptic"
+                out.append((name, "shape rms", pred_rms, meas_rms))
+                c.true(0.5 <= pred_rms / meas_rms <= 2.0, "%s: shape rms: predicted %.3g, measured %.3g (factor 2)"
+                       % (name, pred_rms, meas_rms))
+            out.append((name, eff, pred, meas))
+            c.true((meas > TOL) == richer, "%s: %s: measured change %.3g %s the tolerance %g, as the advisor said (%s)"
+                   % (name, eff, meas, ">" if meas > TOL else "<=", TOL, needs[eff]))
+            if max(pred, meas) >= TOL / 4:
+                c.true(meas > 0 and 0.5 <= pred / meas <= 2.0, "%s: %s: predicted %.3g, measured %.3g (factor 2)"
+                       % (name, eff, pred, meas))
+            else:
+                c.true(pred < TOL and meas < TOL, "%s: %s: predicted %.3g and measured %.3g both small" % (name, eff, pred, meas))
+    with open(os.path.join(work, "advisor_runs.csv"), "w", newline="") as f:
+        wr = csv.writer(f)
+        wr.writerow(["scene", "effect", "predicted", "measured"])
+        for r in out:
+            wr.writerow([r[0], r[1], "%.4g" % r[2], "%.4g" % r[3]])
+    c.finish()
+
+
+def run_dclaw_shape(part):
+    (a, b, cc), (n1, n2) = part["shape"], part.get("blockiness", (2.0, 2.0))
+    return dcadvise.run_dclaw(regress.DCLAW, ["shape", "--a", a, "--b", b, "--c", cc, "--n1", n1, "--n2", n2])
+
+
+if __name__ == "__main__":
+    main()
