@@ -50,13 +50,16 @@ class DeckError(Exception):
 
 _OPS = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul, ast.Div: operator.truediv,
         ast.Pow: operator.pow, ast.USub: operator.neg, ast.UAdd: operator.pos}
+_CMP = {ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
+        ast.GtE: operator.ge}
 _FUNCS = {"sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10, "abs": abs, "sin": math.sin,
           "cos": math.cos, "tan": math.tan, "asin": math.asin, "acos": math.acos, "atan": math.atan,
           "ceil": math.ceil, "floor": math.floor, "round": round}
 
 
 # the commands whose values the advisor reads (variables are substituted in these only)
-READ = {"include", "atom_style", "region", "create_box", "timestep", "pair_style", "fix", "create_atoms", "set"}
+READ = {"include", "atom_style", "region", "create_box", "timestep", "pair_style", "fix", "create_atoms", "set",
+        "neigh_modify", "if"}
 
 
 class Deck:
@@ -65,6 +68,7 @@ class Deck:
     def __init__(self, path, cli_vars):
         self.vars = {}        # name -> (style, [values]) ; equal: expression text
         self.locked = set()   # -var names: the deck's own definition does not replace them
+        self.defined = {}     # name -> where the deck defined it
         for name, values in cli_vars:
             self.vars[name] = ("index", values)
             self.locked.add(name)
@@ -82,6 +86,7 @@ class Deck:
         self.pair = None      # (words, where)
         self.walls = []       # (words, where)
         self.atom_style = "granular"
+        self.cdf = (1.0, "LIGGGHTS' default")   # neigh_modify contact_distance_factor
         self.assumed = []     # what the reading had to assume
         self.dir = os.path.dirname(os.path.abspath(path))
         self._read(path)
@@ -144,7 +149,7 @@ class Deck:
     def value(self, name, where):
         style, vals = self.vars[name]
         if style == "equal":
-            return self.evaluate(vals[0], where)
+            return self.evaluate(vals[0], "%s (variable %s, defined at %s)" % (where, name, self.defined.get(name, "-v")))
         return vals[0]
 
     def evaluate(self, expr, where):
@@ -176,6 +181,13 @@ class Deck:
             return _OPS[type(node.op)](self._eval(node.operand))
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and node.func.id in _FUNCS:
             return _FUNCS[node.func.id](*[self._eval(a) for a in node.args])
+        if isinstance(node, ast.Compare) and len(node.ops) == 1 and type(node.ops[0]) in _CMP:
+            return float(_CMP[type(node.ops[0])](self._eval(node.left), self._eval(node.comparators[0])))
+        if isinstance(node, ast.BoolOp):
+            vals = [bool(self._eval(v)) for v in node.values]
+            return float(all(vals) if isinstance(node.op, ast.And) else any(vals))
+        if isinstance(node, ast.UnaryOp) and isinstance(node.op, ast.Not):
+            return float(not self._eval(node.operand))
         raise ValueError("unsupported element %s" % ast.dump(node)[:40])
 
     # --- the commands the advisor reads
@@ -198,7 +210,9 @@ class Deck:
         except ValueError as e:
             raise DeckError("%s: %s" % (where, e))
         cmd = w[0]
-        if cmd == "include" and len(w) >= 2:
+        if cmd == "if" and len(w) >= 4 and w[2] == "then":
+            self._if(w, where, depth)
+        elif cmd == "include" and len(w) >= 2:
             path = w[1] if os.path.isabs(w[1]) else os.path.join(self.dir, w[1])
             if depth > 10:
                 raise DeckError("%s: include nested too deep" % where)
@@ -220,11 +234,42 @@ class Deck:
             self.created.append((int(float(w[1])), w[3] if len(w) > 3 and w[2] == "region" else None, where))
         elif cmd == "set" and len(w) >= 4:
             self._set(w, where)
+        elif cmd == "neigh_modify" and "contact_distance_factor" in w:
+            k = w.index("contact_distance_factor")
+            self.cdf = (float(w[k + 1]), where)
+
+    def _if(self, w, where, depth):
+        """if "cond" then "cmd" ... [elif "cond" "cmd" ...] [else "cmd" ...]: the chosen commands"""
+        k, chosen = 1, None
+        while k < len(w) and chosen is None:
+            cond = w[k]
+            k += 2 if w[k + 1] in ("then",) else 1
+            cmds = []
+            while k < len(w) and w[k] not in ("elif", "else"):
+                cmds.append(w[k])
+                k += 1
+            if self._truth(cond, where):
+                chosen = cmds
+            elif k < len(w) and w[k] == "else":
+                chosen = w[k + 1:]
+            elif k < len(w) and w[k] == "elif":
+                k += 1
+        for c in chosen or []:
+            self._command(c, where, depth)
+
+    def _truth(self, cond, where):
+        text = self._substitute(cond, where).replace("&&", " and ").replace("||", " or ").replace("!=", " != ")
+        text = re.sub(r"(?<![=!<>])!(?!=)", " not ", text)
+        try:
+            return bool(self._eval(ast.parse(text.replace("^", "**"), mode="eval").body))
+        except (SyntaxError, ValueError, TypeError, ZeroDivisionError):
+            raise DeckError("%s: cannot evaluate the condition '%s'" % (where, cond))
 
     def _variable(self, w, where):
         name, style = w[1], w[2]
         if name in self.locked:
             return
+        self.defined[name] = where
         if style in ("index", "string", "loop", "world", "universe", "uloop"):
             self.vars[name] = ("index", w[3:] or [""])
         elif style == "equal":
@@ -411,7 +456,7 @@ def scene_of(deck, opts):
         h = max(top - bottom, 0.0)
     vin = max([math.sqrt(sum(x * x for x in ins["vel"])) for ins in deck.inserts] or [0.0])
     v = math.sqrt(vin * vin + 2.0 * g * h)
-    src["v"] = "insertion speed %.3g m/s (%s) and free fall over %.3g m (box bottom to the top of the insertion region)" % (
+    src["v"] = "insertion speed %.3g m/s (%s) and free fall over %.3g m (box bottom to the top of the insertion or creation region)" % (
         vin, deck.inserts[0]["where"] if deck.inserts else "none", h)
     if v <= 0.0:
         v = 0.01
@@ -465,7 +510,7 @@ def advise(deck, opts, out):
     costs = report_costs()
     cost = lambda m: ("%.2fx" % costs[m]) if costs.get(m) else "n/a in the report"
     tol = opts.tol
-    rows, warnings, measures = [], [], []
+    rows, warnings, measures, cdf_need = [], [], [], []
     # contact kinds: every pair of particle classes, and each on the walls
     kinds = [(i, j) for i in range(len(parts)) for j in range(i, len(parts))]
     wall_type = 1
@@ -565,6 +610,8 @@ def advise(deck, opts, out):
                 fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"])), need,
               cost("jkr_elliptic") if need != "elastic law" else "1x",
               "model jkr_elliptic; fix ... property/global workOfAdhesion peratomtypepair ..." if need != "elastic law" else "-")
+            if need != "elastic law":
+                cdf_need.append(1.0 + m["jkr_separation"] / (da["radius"] + (0.0 if wall else db["radius"])))
         else:
             R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
         # roughness
@@ -575,6 +622,8 @@ def advise(deck, opts, out):
                 fmt(m["sigma_over_delta_rest"]), fmt(m["sigma_over_delta_max"]), fmt(m["rough_force_rest"]),
                 fmt(m["rough_force_max"])), need, cost("gw_rough") if ch > tol else "1x",
               "model gw_rough; fix ... property/global surfaceRoughness peratomtype ..." if ch > tol else "-")
+            if ch > tol:
+                cdf_need.append(1.0 + m["rough_reach"] / (da["radius"] + (0.0 if wall else db["radius"])))
         else:
             R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
         # tangential memory
@@ -590,6 +639,16 @@ def advise(deck, opts, out):
         else:
             R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
         R("rolling", "not assessed (doc/advisor.md)", "-", "-", "-")
+        # models acting apart: the contact distance they need (the set-up refuses less)
+        reach_R = da["radius"] + (0.0 if wall else db["radius"])
+        models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}
+        for law, gap, on in (("jkr_elliptic", m["jkr_separation"], w > 0), ("gw_rough", m["rough_reach"], sigma > 0)):
+            need_cdf = 1.0 + gap / reach_R
+            m["contact_distance_factor_" + law] = need_cdf
+            if on and law in models and deck.cdf[0] < need_cdf:
+                warnings.append("%s: %s acts until the surfaces are %s m apart: neigh_modify contact_distance_factor "
+                                "%s (%s) is below the %s it needs" % (kind, law, fmt(gap), fmt(deck.cdf[0]), deck.cdf[1],
+                                                                      fmt(need_cdf)))
     # ---- print
     out.write("dcadvise: %s\n" % opts.deck)
     out.write("pair model: %s (%s)\n" % (model_line, deck.pair[1] if deck.pair else "-"))
@@ -614,6 +673,9 @@ def advise(deck, opts, out):
         for r in [head] + sub:
             out.write("  " + "  ".join(r[k].ljust(wd[k]) for k in range(3)) + "  " + r[3] + "\n")
     lines = sorted({r[5] for r in rows if r[5] != "-"})
+    if cdf_need:
+        lines.append("neigh_modify contact_distance_factor %.6g  (the largest the advised models need; at least "
+                     "LIGGGHTS' 1)" % max(1.0, max(cdf_need)))
     if lines:
         out.write("\ndeck lines for what the scene needs:\n")
         for ln in lines:

@@ -174,6 +174,9 @@ static int cmd_scene(int argc, char **argv)
   double tabor = 0.0;
   if ((st = dc_scene_tabor(R, w, Estar, dc_cli_get(o, "z0"), &tabor))) goto range;
   const double pulloff = w > 0.0 ? dc_jkr_sphere_pulloff(R, w) : 0.0;
+  /* how far apart the models act: JKR until delta_break, the rough law from its reach */
+  const double jkr_break = w > 0.0 ? -dc_jkr_sphere_delta_break(R, Estar, w) : 0.0;
+  const double rough_reach = -dc_gw_sphere_reach(DC_GW_SPHERE_TABULATED) * sigma;
   /* roughness: the rough-sphere law (tabulated GW, dc/gw_rough.h) over Hertz, at rest and at impact */
   double rough_rest = 0.0, rough_imp = 0.0;
   if (sigma > 0.0) {
@@ -202,12 +205,12 @@ static int cmd_scene(int argc, char **argv)
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
     "delta_rest,a_rest,fessler,delta_n1,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
-    "slip_distance,u_t,slip_ratio,tangential_error";
+    "slip_distance,u_t,slip_ratio,tangential_error,jkr_separation,rough_reach";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
                         d_rest, rest.a, fessler, d_n1, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
-                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, terr};
+                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, terr, jkr_break, rough_reach};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",
