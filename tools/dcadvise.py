@@ -605,7 +605,7 @@ def advise(deck, opts, out):
             po_w = m["pulloff_over_weight"]
             need = "elastic law"
             if po_w > tol or m["pulloff_over_F_max"] > tol:
-                need = "jkr_elliptic" if tab >= 5 else "jkr_elliptic (Tabor %s < 5: DMT-like, JKR overestimates less than x1.33 on pull-off)" % fmt(tab)
+                need = "jkr_elliptic" if tab >= 5 else "jkr_elliptic (Tabor %s < 5: towards DMT, whose pull-off 2 pi w R is up to 4/3 of JKR's)" % fmt(tab)
             R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force" % (
                 fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"])), need,
               cost("jkr_elliptic") if need != "elastic law" else "1x",
