@@ -594,7 +594,8 @@ def advise(deck, opts, out):
             pr = m["plastic_ratio"]
             change = 1.0 - m["e_plastic"]
             need = "jamari_ep" if change > tol else "elastic law"
-            R("plasticity", "delta_max/delta_n1 %s; restitution from plasticity alone %s" % (fmt(pr), fmt(m["e_plastic"])),
+            R("plasticity", "impact over yield speed %s (delta_max/delta_n1 %s); restitution from plasticity alone %s"
+              % (fmt(v / m["v_yield"]), fmt(pr), fmt(m["e_plastic"])),
               need, cost("jamari_ep") if change > tol else "1x",
               "model jamari_ep; fix ... property/global hardness peratomtype %s" % fmt(H) if change > tol else "-")
         else:
@@ -604,10 +605,13 @@ def advise(deck, opts, out):
             tab = m["tabor"]
             po_w = m["pulloff_over_weight"]
             need = "elastic law"
-            if po_w > tol or m["pulloff_over_F_max"] > tol:
+            sticks = v < m["v_stick"]
+            if po_w > tol or m["pulloff_over_F_max"] > tol or sticks:
                 need = "jkr_elliptic" if tab >= 5 else "jkr_elliptic (Tabor %s < 5: towards DMT, whose pull-off 2 pi w R is up to 4/3 of JKR's)" % fmt(tab)
-            R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force" % (
-                fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"])), need,
+            R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force; sticking speed %s m/s "
+              "(impact %s of it: %s)" % (fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"]),
+                                         fmt(m["v_stick"]), fmt(v / m["v_stick"]), "sticks" if sticks else "rebounds"),
+              need,
               cost("jkr_elliptic") if need != "elastic law" else "1x",
               "model jkr_elliptic; fix ... property/global workOfAdhesion peratomtypepair ..." if need != "elastic law" else "-")
             if need != "elastic law":

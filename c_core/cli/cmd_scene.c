@@ -3,10 +3,10 @@
    (dc/scene.h, doc/advisor.md): its time scales, the Hertz impact at the
    largest speed and the contact at rest under a weight, and per effect a
    dimensionless measure with the change the richer law makes: plasticity
-   (Jamari-Schipper restitution), adhesion (Tabor parameter, JKR pull-off),
-   roughness (the rough-sphere law's force over Hertz's), tangential memory
-   (the spring-sliding force against Cattaneo-Mindlin's on the first
-   loading). One CSV row. */
+   (yield speed, Jamari-Schipper restitution), adhesion (Tabor parameter,
+   JKR pull-off and sticking speed), roughness (the rough-sphere law's force
+   over Hertz's), tangential memory (the spring-sliding force against
+   Cattaneo-Mindlin's on the first loading). One CSV row. */
 #include "cli.h"
 #include "dc/classical_normal.h"
 #include "dc/classical_tangential.h"
@@ -81,6 +81,29 @@ static int tangential_error(const dc_mindlin_pair *mp, double Gstar, double Esta
       return st;
     *err = fmax(*err, fabs(os.Ft[0] - oc.Ft[0]) / (mu * Fn));
   }
+  return DC_OK;
+}
+
+/* Work the JKR neck takes from a sphere contact on its way apart: the
+   tensile force on the unloading branch integrated from touch (delta = 0,
+   where the model forms the neck on approach) to delta_break, Simpson's
+   rule on 4000 intervals in a0 = (delta - delta_break)^1/2 (the force has a
+   square-root vertical tangent at delta_break). */
+static int jkr_separation_work(double R, double Estar, double w, double *W)
+{
+  const double db = dc_jkr_sphere_delta_break(R, Estar, w), s_top = sqrt(-db);
+  const int n = 4000;
+  double sum = 0.0;
+  for (int i = 0; i <= n; i++) {
+    const double s = s_top * i / n, delta = db + s * s;
+    dc_jkr_state st;
+    const int rc = dc_jkr_sphere(R, Estar, w, delta, &st);
+    if (rc) return rc;
+    /* d delta = 2 s ds */
+    const double f = -st.F * 2.0 * s, c = (i == 0 || i == n) ? 1.0 : (i % 2 ? 4.0 : 2.0);
+    sum += c * f;
+  }
+  *W = sum * s_top / n / 3.0;
   return DC_OK;
 }
 
@@ -170,10 +193,16 @@ static int cmd_scene(int argc, char **argv)
         (st = jamari_restitution(&g, Estar, &jp, me, v, col.Tc, steps, &e_plastic, &dmax_plastic)))
       goto range;
   }
+  /* the impact speed that reaches delta_n1: 1/2 m v_y^2 = 2/5 K delta_n1^5/2 */
+  const double v_yield = H > 0.0 ? sqrt(0.8 * Khz * d_n1 * d_n1 * sqrt(d_n1) / me) : 0.0;
   /* adhesion: Tabor parameter, JKR pull-off 3/2 pi w R against the weight and the impact force */
   double tabor = 0.0;
   if ((st = dc_scene_tabor(R, w, Estar, dc_cli_get(o, "z0"), &tabor))) goto range;
   const double pulloff = w > 0.0 ? dc_jkr_sphere_pulloff(R, w) : 0.0;
+  /* JKR sticking: an impact slower than v_stick cannot pay the neck's work of separation */
+  double W_sep = 0.0;
+  if (w > 0.0 && (st = jkr_separation_work(R, Estar, w, &W_sep))) goto range;
+  const double v_stick = sqrt(2.0 * W_sep / me);
   /* how far apart the models act: JKR until delta_break, the rough law from its reach */
   const double jkr_break = w > 0.0 ? -dc_jkr_sphere_delta_break(R, Estar, w) : 0.0;
   const double rough_reach = -dc_gw_sphere_reach(DC_GW_SPHERE_TABULATED) * sigma;
@@ -203,14 +232,15 @@ static int cmd_scene(int argc, char **argv)
   }
   const char *cols =
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
-    "delta_rest,a_rest,fessler,delta_n1,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
+    "delta_rest,a_rest,fessler,delta_n1,v_yield,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
-    "slip_distance,u_t,slip_ratio,tangential_error,jkr_separation,rough_reach";
+    "slip_distance,u_t,slip_ratio,tangential_error,jkr_separation,rough_reach,W_separation,v_stick";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
-                        d_rest, rest.a, fessler, d_n1, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
+                        d_rest, rest.a, fessler, d_n1, v_yield, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
-                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, terr, jkr_break, rough_reach};
+                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, terr, jkr_break, rough_reach, W_sep,
+                        v_stick};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",

@@ -408,6 +408,32 @@ for shape, v, dm, dres, e in jrows:
         abs(got["plastic_ratio"] * got["delta_n1"] / float(dm) - 1) < 1e-3
     check(ok, "scene --H, sphere on a wall at %s m/s: e %r, delta_max %r; reference %s, %s (%s)"
           % (v, got.get("e_plastic"), got.get("plastic_ratio", 0) * got.get("delta_n1", 0), e, dm, err.strip()))
+# the yield speed against the references' onset row; the JKR neck's work of
+# separation against its parametric form integrated here (mpmath):
+# delta(a) = a^2/R - (2 pi w a/E*)^1/2, F(a) = 4 E* a^3/(3 R) - (8 pi w E* a^3)^1/2,
+# W = int -F d delta from touch (delta = 0) to the turning point of delta(a)
+rc, got, err = row1(["scene", "--R1", "0.001", "--R2", "0", "--E1", "7e10", "--E2", "7e10", "--nu1", "0.3", "--nu2", "0.3",
+                     "--rho1", "2700", "--v", "1", "--dt", "1e-9", "--H", "3e8"])
+check(rc == 0 and abs(got["v_yield"] / float(onset[4]) - 1) < 1e-12,
+      "scene v_yield %r, reference %s" % (got.get("v_yield"), onset[4]))
+try:
+    import mpmath as mp
+    mp.mp.dps = 30
+    for Rw, Ew, ww in [(1e-3, 2.75e6, 0.05), (2e-4, 1e9, 0.02)]:
+        rc, got, err = row1(["scene", "--R1", repr(Rw), "--R2", "0", "--E1", repr(2 * (1 - 0.09) * Ew), "--E2",
+                             repr(2 * (1 - 0.09) * Ew), "--w", repr(ww), "--v", "0.1", "--dt", "1e-9"])
+        R_, E_, w_ = mp.mpf(Rw), mp.mpf(2 * (1 - 0.09) * Ew) / (2 * (1 - mp.mpf("0.09"))), mp.mpf(ww)
+        dl = lambda a: a ** 2 / R_ - mp.sqrt(2 * mp.pi * w_ * a / E_)
+        ddl = lambda a: 2 * a / R_ - mp.sqrt(2 * mp.pi * w_ / E_) / (2 * mp.sqrt(a))
+        Fa = lambda a: 4 * E_ * a ** 3 / (3 * R_) - mp.sqrt(8 * mp.pi * w_ * E_ * a ** 3)
+        a0 = mp.cbrt(2 * mp.pi * w_ * R_ ** 2 / E_)
+        ad = (R_ / 4 * mp.sqrt(2 * mp.pi * w_ / E_)) ** (mp.mpf(2) / 3)
+        W = mp.quad(lambda a: -Fa(a) * ddl(a), [ad, a0])
+        check(rc == 0 and abs(got["W_separation"] / float(W) - 1) < 1e-6 and abs(got["jkr_separation"] / float(-dl(ad)) - 1) < 1e-9,
+              "scene JKR work of separation %r, parametric %s; separation %r, %s" %
+              (got.get("W_separation"), mp.nstr(W, 12), got.get("jkr_separation"), mp.nstr(-dl(ad), 12)))
+except ImportError:
+    check(False, "mpmath for the JKR work of separation")
 for bad, keys in [(["--R1", "-1"], ["R1"]), (["--nu1", "0.7"], ["nu1"]), (["--H", "x"], ["H"]), (["--mu_rough", "60", "--sigma", "1e-6"], ["mu_rough"])]:
     rc, out, err = run(["scene"] + bad)
     check(rc == 2 and all("--" + k in err for k in keys), "scene %s: exit %d, %s" % (" ".join(bad), rc, err.strip()))

@@ -16,6 +16,9 @@ Effects and probes:
               elastic against elastic-plastic (in.probe_impact);
   adhesion    pull-off force from the wall, none against JKR
               (in.probe_pulloff), as a fraction of the weight for the side;
+  sticking    a JKR impact at the scene's speed (in.probe_impact): sticks
+              where the advisor's sticking speed exceeds it, else rebounds
+              at (v^2 - v_stick^2)^1/2;
   roughness   the wall force at the overlap at rest, smooth against rough
               (in.probe_static);
   shape       the wall force of 24 superquadrics in random orientations at
@@ -49,7 +52,7 @@ SCENES = [
     ("example rough_packing, sigma_r 0.001", os.path.join(ROOT, "examples", "rough_packing", "in.rough_packing"),
      [("sigma_r", "0.001")], {}, ["roughness"]),
     ("example adhesive_settling", os.path.join(ROOT, "examples", "adhesive_settling", "in.adhesive_settling"), [], {},
-     ["adhesion"]),
+     ["adhesion", "sticking"]),
     ("example rough_cohesive_powder", os.path.join(ROOT, "examples", "rough_cohesive_powder", "in.rough_cohesive_powder"),
      [], {}, ["roughness", "adhesion"]),
     ("tutorial packing, hardness 2e4 Pa", os.path.join(TUT, "packing", "in.packing"), [], {"H": 2e4}, ["plasticity"]),
@@ -58,8 +61,9 @@ SCENES = [
     ("drop: hard, below yield", SCENE, [("H", "1e9")], {}, ["plasticity"]),
     ("drop: near yield", SCENE, [("H", "3e7")], {}, ["plasticity"]),
     ("drop: soft, beyond yield", SCENE, [("H", "1e7")], {}, ["plasticity"]),
-    ("drop: weak adhesion", SCENE, [("w", "1e-5")], {}, ["adhesion"]),
-    ("drop: strong adhesion", SCENE, [("w", "0.05")], {}, ["adhesion"]),
+    ("drop: weak adhesion", SCENE, [("w", "1e-5")], {}, ["adhesion", "sticking"]),
+    ("drop: strong adhesion", SCENE, [("w", "0.05")], {}, ["adhesion", "sticking"]),
+    ("drop: fine sticky powder", SCENE, [("w", "0.5"), ("r", "2e-5"), ("E", "5e6")], {}, ["adhesion", "sticking"]),
     ("drop: smooth", SCENE, [("sigma", "1e-9")], {}, ["roughness"]),
     ("drop: rough", SCENE, [("sigma", "2e-6")], {}, ["roughness"]),
 ]
@@ -101,18 +105,30 @@ def run_plasticity(work, mat, m, v):
 
 
 def run_adhesion(work, mat, m):
-    # pressed to the overlap of the contact at rest (at least a tenth of JKR's
-    # separation overlap), then pulled back at a speed far below the contact's
+    # pressed to the overlap of the contact at rest (at least half JKR's
+    # separation overlap) in 2000 steps, then pulled back as slowly until
+    # 1.5 separation overlaps apart
     dt = m["t_c"] / 2000.0
-    delta = max(m["delta_rest"], 1e-9)
+    delta = max(m["delta_rest"], 0.5 * m["jkr_separation"])
     u = delta / (2000 * dt)
+    steps = int((delta + 1.5 * m["jkr_separation"]) / (u * dt)) + 100
     F = {}
     for model in ("hertz_elliptic", "jkr_elliptic"):
         rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_pulloff"), work, model,
-                     dict(mat, model=model, delta=repr(delta), u=repr(u), dt=repr(dt), steps=20000))
+                     dict(mat, model=model, delta=repr(delta), u=repr(u), dt=repr(dt), steps=steps))
         F[model] = max(max(-r[3] for r in rows), 0.0)
     meas = (F["jkr_elliptic"] - F["hertz_elliptic"]) / m["weight"]
     return m["pulloff_over_weight"], meas
+
+
+def run_sticking(work, mat, m, v):
+    """JKR impact at the scene's speed (no damping): the rebound speed, (v^2 - v_stick^2)^1/2 by energy, or 0 (sticks)"""
+    dt = m["t_c"] / 4000.0
+    rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_impact"), work, "jkr_impact",
+                 dict(mat, model="jkr_elliptic", v=repr(v), dt=repr(dt), steps=int(6 * m["t_c"] / dt)))
+    pred = math.sqrt(max(v * v - m["v_stick"] ** 2, 0.0))
+    apart = rows[-1][1] > mat["R"] + m["jkr_separation"]   # beyond the neck's reach at the end
+    return pred, rows[-1][2] if apart else 0.0
 
 
 def run_roughness(work, mat, m):
@@ -192,6 +208,15 @@ def main():
             elif eff == "adhesion":
                 pred, meas = run_adhesion(wd, mat, m)
                 richer = needs[eff].startswith("jkr_elliptic")
+            elif eff == "sticking":
+                pred, meas = run_sticking(wd, mat, m, v)
+                out.append((name, eff, pred, meas))
+                c.true((meas == 0.0) == (pred == 0.0), "%s: JKR impact at %.3g m/s %s, as the advisor said (sticking "
+                       "speed %.3g m/s)" % (name, v, "sticks" if meas == 0.0 else "rebounds at %.3g m/s" % meas, m["v_stick"]))
+                if pred > 0.0:
+                    c.true(meas > 0 and 0.5 <= pred / meas <= 2.0, "%s: rebound speed predicted %.3g, measured %.3g (factor 2)"
+                           % (name, pred, meas))
+                continue
             elif eff == "roughness":
                 pred, meas = run_roughness(wd, mat, m)
                 richer = needs[eff] == "gw_rough"
