@@ -421,8 +421,8 @@ static void raise_relative(double Ki[3], double Kj[3], double k_min)
   Kj[0] += A0; Kj[1] += A1; Kj[2] += A2;
 }
 
-static int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
-                         const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k);
+DC_INLINE int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                            const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k);
 static int kinematics_scaled(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
                              const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k);
 
@@ -468,8 +468,8 @@ static int kinematics_scaled(const double n[3], const dc_rolling_curvature *ci, 
 }
 
 /* The kinematics of checked inputs (above) */
-static int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
-                         const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
+DC_INLINE int kinematics_at(const double n[3], const dc_rolling_curvature *ci, const dc_rolling_curvature *cj,
+                            const double dv[3], const double dw[3], double k_min, int singular_ok, dc_rolling_kin *k)
 {
   if (ci->k1 == ci->k2 && cj->k1 == cj->k2) {
     /* both isotropic (spheres, a sphere on a plane): K_i + K_j = (k_i + k_j) I,
@@ -675,14 +675,7 @@ static int rolling_force(const dc_rolling_params *p, const dc_rolling_material *
   double ey[3];
   cross3(n, ex, ey);
   const double V = k->V;
-  double xi_x = dc_dot3(k->slip, ex) / V, xi_y = dc_dot3(k->slip, ey) / V;
-  const double phi = k->spin / V;
-  if (!(isfinite(xi_x) && isfinite(xi_y))) {
-    /* a dot product of slips near DBL_MAX overflowed: on slip / 4 */
-    const double s4[3] = {0.25 * k->slip[0], 0.25 * k->slip[1], 0.25 * k->slip[2]};
-    xi_x = 4.0 * (dc_dot3(s4, ex) / V);
-    xi_y = 4.0 * (dc_dot3(s4, ey) / V);
-  }
+  const double xi_x = dc_dot3(k->slip, ex) / V, xi_y = dc_dot3(k->slip, ey) / V, phi = k->spin / V;
   /* coefficients: along an axis of the patch, Kalker's; oblique, those of
      the effective axis ratio, c33 scaled by the lateral second moment */
   dc_kalker_coef c;

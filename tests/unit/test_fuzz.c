@@ -3592,7 +3592,9 @@ static void fuzz_rolling(void)
     const double lxi = lg(max_abs3(kk.slip)) - lg(kk.V), lphi = lg(kk.spin) - lg(kk.V), lc = 0.5 * (lg(pa.a) + lg(pa.b));
     const double lcoef = 1.5 * (lg(pa.a) - lg(pa.b)) + lg(10.0);
     const double lM = fmin(lg(rm->G) + 3.0 * lc + lcoef + fmax(lxi, lc + lphi) + 2.0, lg(p.mu) + lg(pa.F_bound) + lg(pa.a));
-    const double big = fmax(fmax(lg(p.mu) + lg(pa.F_bound), lM), fmax(lxi, lphi));
+    /* (and a slip beyond DBL_MAX/4, whose dot product with ex may overflow) */
+    const double big = fmax(fmax(fmax(lg(p.mu) + lg(pa.F_bound), lM), fmax(lxi, lphi)),
+                            lg(max_abs3(kk.slip)) + log(4.0));
     FZ_EXPECT(f, st != DC_ERANGE || big > LOG_MAX - 2.0, "DC_ERANGE for representable results", RF_FMT, RF_ARGS);
   }
 #undef RF_FMT

@@ -286,9 +286,8 @@ DC_INLINE int dc_classical_tangential_step_law(int law, int checked, const dc_cl
     frexp(fmax(fabs(vt[0]), fmax(fabs(vt[1]), fabs(vt[2]))), &e);
     for (int k = 0; k < 3; k++) v[k] = ldexp(vt[k], -e);
     ct_project_plane(v, n);
-    const double vm = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
-    if (vm < 1e-270) {
-      frexp(vm, &e);
+    if (dc_dot3(v, v) < 1e-270) {   /* |v| below ~1e-135: scaled to order one again */
+      frexp(fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2]))), &e);
       for (int k = 0; k < 3; k++) v[k] = ldexp(v[k], -e);
     }
     const double vv = ct_norm3(v);

@@ -251,8 +251,9 @@ typedef struct {
    the unit normal (as for the kinematics), k from dc_rolling_kinematics.
    Not formed, a == 0 or V <= v_min: zeros, rolling = 0, DC_OK. DC_EDOM for
    an input out of its domain or non-finite; DC_ERANGE when a result
-   overflows. out untouched on error. No allocation; a circular patch
-   skips the coefficient series. */
+   overflows, or a slip component beyond DBL_MAX/4 overflows its dot
+   product with the rolling direction. out untouched on error. No
+   allocation; a circular patch skips the coefficient series. */
 int dc_rolling_force(const dc_rolling_params *p, const dc_rolling_material *rm,
                      const dc_patch *patch, const double n[3], const dc_rolling_kin *k,
                      dc_rolling_out *out);
