@@ -21,6 +21,8 @@ Effects and probes:
               at (v^2 - v_stick^2)^1/2;
   roughness   the wall force at the overlap at rest, smooth against rough
               (in.probe_static);
+  time step   the elastic impact at the deck's dt against dt/50: duration
+              and restitution (the error part of the advisor's rule);
   shape       the wall force of 24 superquadrics in random orientations at
               equal overlap, one radius against the curvatures
               (in.probe_shape): max and rms of F_1/F - 1.
@@ -48,7 +50,7 @@ TOL = 0.05
 # (name, deck, -var pairs, advisor options, effects run)
 SCENES = [
     ("example superquadric_settling", os.path.join(ROOT, "examples", "superquadric_settling", "in.superquadric_settling"),
-     [], {}, ["shape"]),
+     [], {}, ["shape", "time step"]),
     ("example rough_packing, sigma_r 0.001", os.path.join(ROOT, "examples", "rough_packing", "in.rough_packing"),
      [("sigma_r", "0.001")], {}, ["roughness"]),
     ("example adhesive_settling", os.path.join(ROOT, "examples", "adhesive_settling", "in.adhesive_settling"), [], {},
@@ -64,7 +66,8 @@ SCENES = [
     ("drop: weak adhesion", SCENE, [("w", "1e-5")], {}, ["adhesion", "sticking"]),
     ("drop: strong adhesion", SCENE, [("w", "0.05")], {}, ["adhesion", "sticking"]),
     ("drop: fine sticky powder", SCENE, [("w", "0.5"), ("r", "2e-5"), ("E", "5e6")], {}, ["adhesion", "sticking"]),
-    ("drop: smooth", SCENE, [("sigma", "1e-9")], {}, ["roughness"]),
+    ("drop: smooth", SCENE, [("sigma", "1e-9")], {}, ["roughness", "time step"]),
+    ("drop: coarse time step", SCENE, [("dt", "2e-5")], {}, ["time step"]),
     ("drop: rough", SCENE, [("sigma", "2e-6")], {}, ["roughness"]),
 ]
 
@@ -129,6 +132,19 @@ def run_sticking(work, mat, m, v):
     pred = math.sqrt(max(v * v - m["v_stick"] ** 2, 0.0))
     apart = rows[-1][1] > mat["R"] + m["jkr_separation"]   # beyond the neck's reach at the end
     return pred, rows[-1][2] if apart else 0.0
+
+
+def run_time_step(work, mat, m, v, dt):
+    """The elastic impact at the deck's dt against dt/50: the larger of the
+    contact duration's and the restitution's relative change"""
+    got = {}
+    for tag, h in (("deck", dt), ("fine", dt / 50.0)):
+        rows = probe(os.path.join(ROOT, "inputs", "advisor", "in.probe_impact"), work, "dt_" + tag,
+                     dict(mat, model="hertz_elliptic", v=repr(v), dt=repr(h), steps=int(3 * m["t_c"] / h) + 10))
+        n = sum(1 for r in rows if r[1] < mat["R"])
+        got[tag] = (n * h, rows[-1][2] / v)
+    meas = max(abs(got["deck"][0] / got["fine"][0] - 1.0), abs(got["deck"][1] - got["fine"][1]))
+    return max(m["duration_error"], m["restitution_error"]), meas
 
 
 def run_roughness(work, mat, m):
@@ -217,6 +233,9 @@ def main():
                     c.true(meas > 0 and 0.5 <= pred / meas <= 2.0, "%s: rebound speed predicted %.3g, measured %.3g (factor 2)"
                            % (name, pred, meas))
                 continue
+            elif eff == "time step":
+                pred, meas = run_time_step(wd, mat, m, v, d.dt[0])
+                richer = pred > TOL   # the error part of the advisor's rule (the Rayleigh part is no run's)
             elif eff == "roughness":
                 pred, meas = run_roughness(wd, mat, m)
                 richer = needs[eff] == "gw_rough"
