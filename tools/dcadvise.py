@@ -630,16 +630,14 @@ def advise(deck, opts, out):
                 cdf_need.append(1.0 + m["rough_reach"] / (da["radius"] + (0.0 if wall else db["radius"])))
         else:
             R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
-        # tangential memory
+        # tangential memory: an oblique impact (tangential speed = normal speed) under both laws
         if mu > 0:
-            sr = m["slip_ratio"]
-            # the part of an impact's sliding path spent in partial slip, where the
-            # spring-sliding force differs from Cattaneo-Mindlin's by up to the error
-            change = m["tangential_error"] * min(1.0, 1.0 / sr) if sr > 0 else m["tangential_error"]
+            change = abs(m["beta_cmd"] - m["beta_history"])
             need = "cmd_tangential" if change > tol else "tangential history"
-            R("tangential memory", "slip distance %s m; one impact moves %s slip distances; spring-sliding error %s "
-              "of mu F on the partial-slip part" % (fmt(m["slip_distance"]), fmt(sr), fmt(m["tangential_error"])),
-              need, cost(need), "tangential %s" % need.split()[-1] if need == "cmd_tangential" else "tangential history")
+            R("tangential memory", "tangential restitution of a 45-degree impact: %s with spring-sliding, %s with "
+              "Cattaneo-Mindlin (slip distance %s m, one impact moves %s of them)" % (
+                  fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
+              need, cost(need), "tangential cmd_tangential" if need == "cmd_tangential" else "tangential history")
         else:
             R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
         R("rolling", "not assessed (doc/advisor.md)", "-", "-", "-")

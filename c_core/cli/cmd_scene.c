@@ -5,8 +5,8 @@
    dimensionless measure with the change the richer law makes: plasticity
    (yield speed, Jamari-Schipper restitution), adhesion (Tabor parameter,
    JKR pull-off and sticking speed), roughness (the rough-sphere law's force
-   over Hertz's), tangential memory (the spring-sliding force against
-   Cattaneo-Mindlin's on the first loading). One CSV row. */
+   over Hertz's), tangential memory (an oblique impact's tangential
+   restitution under spring-sliding and Cattaneo-Mindlin). One CSV row. */
 #include "cli.h"
 #include "dc/classical_normal.h"
 #include "dc/classical_tangential.h"
@@ -49,41 +49,6 @@ static int jamari_restitution(const dc_hertz_geom *g, double Estar, const dc_jam
   return DC_ENOCONV;
 }
 
-/* Largest |F_spring-sliding - F_CMD| / (mu Fn) on the first loading from 0
-   to u at constant Fn of a circular contact of radius a, in 1000 steps:
-   the error of LIGGGHTS' `tangential history` physics (spring 8 G* a,
-   cut at mu Fn) against Cattaneo-Mindlin. */
-static int tangential_error(const dc_mindlin_pair *mp, double Gstar, double Estar, double mu, double Fn, double a,
-                            double u, double *err)
-{
-  const dc_cmd_params cp = {mu, 0.0, 0, 0};
-  const dc_classical_tangential_params sp = {DC_CT_SPRING_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_NONE, mu, 0.0, 0.0,
-                                             0.0, Gstar, Estar, 0.0, 0.0};
-  dc_classical_tangential ct;
-  dc_param_error perr;
-  int st = dc_classical_tangential_init(&sp, &ct, &perr);
-  if (st) return st;
-  const dc_patch pa = {a, a, {0.0, 0.0, 0.0}, Fn, Fn, 1.0};
-  const dc_classical_tangential_contact cc = {1.0, 0.0, 0.0};
-  const double n[3] = {0.0, 0.0, 1.0}, vt[3] = {0.0, 0.0, 0.0};
-  dc_cmd_state hc;
-  memset(&hc, 0, sizeof hc);
-  dc_classical_tangential_state hs;
-  memset(&hs, 0, sizeof hs);
-  dc_cmd_out oc;
-  dc_classical_tangential_out os;
-  const int steps = 1000;
-  const double du[3] = {u / steps, 0.0, 0.0};
-  *err = 0.0;
-  for (int i = 0; i < steps; i++) {
-    if ((st = dc_cmd_step(&cp, mp, &pa, n, du, 0.0, 1.0, &hc, &oc)) ||
-        (st = dc_classical_tangential_step(&ct, &pa, &cc, n, du, vt, 1.0, &hs, &os)))
-      return st;
-    *err = fmax(*err, fabs(os.Ft[0] - oc.Ft[0]) / (mu * Fn));
-  }
-  return DC_OK;
-}
-
 /* Work the JKR neck takes from a sphere contact on its way apart: the
    tensile force on the unloading branch integrated from touch (delta = 0,
    where the model forms the neck on approach) to delta_break, Simpson's
@@ -105,6 +70,56 @@ static int jkr_separation_work(double R, double Estar, double w, double *W)
   }
   *W = sum * s_top / n / 3.0;
   return DC_OK;
+}
+
+/* Tangential restitution of an oblique elastic Hertz impact (normal speed
+   v, tangential v_t at the contact point, the bodies not spinning): the
+   contact point's tangential speed after over before. Spheres of effective
+   mass m: the slip speed s changes by -7/2 F_t / m (translation and the
+   rolling of both, I = 2/5 m R^2). Tangential law: Cattaneo-Mindlin (cmd
+   1) or spring-sliding with Mindlin's stiffness (cmd 0, LIGGGHTS' stock
+   history), stepped on the Hertz patch; symplectic Euler at Tc/4000. */
+static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double Estar, double mu,
+                        const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta)
+{
+  const dc_cmd_params cp = {mu, 0.0, 0, 0};
+  const dc_classical_tangential_params sp = {DC_CT_SPRING_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_NONE, mu, 0.0, 0.0,
+                                             0.0, Gstar, Estar, 0.0, 0.0};
+  dc_classical_tangential ct;
+  dc_param_error perr;
+  int st = dc_classical_tangential_init(&sp, &ct, &perr);
+  if (st) return st;
+  const dc_classical_tangential_contact cc = {me, 0.0, 0.0};
+  const double n[3] = {0.0, 0.0, 1.0}, dt = Tc / 4000.0;
+  dc_cmd_state hc;
+  memset(&hc, 0, sizeof hc);
+  dc_classical_tangential_state hs;
+  memset(&hs, 0, sizeof hs);
+  double delta = 0.0, vn = v, slip = vt;
+  for (long i = 0; i < 400000; i++) {
+    delta += vn * dt;
+    if (delta <= 0.0) {
+      *beta = slip / vt;
+      return DC_OK;
+    }
+    dc_hertz_state h;
+    if ((st = dc_hertz_contact(g, Estar, delta, &h))) return st;
+    const dc_patch pa = {h.a, h.a, {0.0, 0.0, 0.0}, h.F, h.F, 1.0};
+    const double du[3] = {slip * dt, 0.0, 0.0}, vv[3] = {slip, 0.0, 0.0};
+    double Ft;
+    if (cmd) {
+      dc_cmd_out o;
+      if ((st = dc_cmd_step(&cp, mp, &pa, n, du, 0.0, dt, &hc, &o))) return st;
+      Ft = o.Ft[0];
+    } else {
+      dc_classical_tangential_out o;
+      if ((st = dc_classical_tangential_step(&ct, &pa, &cc, n, du, vv, dt, &hs, &o))) return st;
+      Ft = o.Ft[0];
+    }
+    vn -= h.F / me * dt;
+    slip -= 3.5 * Ft / me * dt;
+  }
+  return DC_ENOCONV;
 }
 
 static int cmd_scene(int argc, char **argv)
@@ -223,24 +238,24 @@ static int cmd_scene(int argc, char **argv)
   }
   /* tangential memory: Mindlin's slip distance 3 mu F / (16 G* a) at the
      impact's largest force against the tangential displacement of one
-     impact, vt times its duration; the spring-sliding error along it */
-  double slip = 0.0, ut = vt * col.Tc, terr = 0.0;
-  if (mu > 0.0) {
-    slip = 3.0 * mu * col.Fmax / (16.0 * Gstar * imp.a);
-    if (ut > 0.0 && (st = tangential_error(&mp, Gstar, Estar, mu, col.Fmax, imp.a, fmin(ut, 10.0 * slip), &terr)))
-      goto range;
-  }
+     impact, vt times its duration */
+  const double slip = mu > 0.0 ? 3.0 * mu * col.Fmax / (16.0 * Gstar * imp.a) : 0.0, ut = vt * col.Tc;
+  /* the oblique impact's tangential restitution under both tangential laws */
+  double beta_cmd = 0.0, beta_hist = 0.0;
+  if (mu > 0.0 && vt > 0.0 && ((st = oblique_beta(1, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_cmd)) ||
+                               (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist))))
+    goto range;
   const char *cols =
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
     "delta_rest,a_rest,fessler,delta_n1,v_yield,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
-    "slip_distance,u_t,slip_ratio,tangential_error,jkr_separation,rough_reach,W_separation,v_stick";
+    "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
                         d_rest, rest.a, fessler, d_n1, v_yield, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
-                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, terr, jkr_break, rough_reach, W_sep,
-                        v_stick};
+                        rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, jkr_break, rough_reach, W_sep,
+                        v_stick, beta_cmd, beta_hist};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",

@@ -50,7 +50,7 @@ p = subprocess.run([DCLAW, "scene", "--R1", "0.001", "--R2", "0", "--E1", "5e8",
                     "0.25", "--rho1", "2500", "--rho2", "2500", "--v", repr(v), "--g", "9.81", "--dt", "1e-6", "--mu", "0.4",
                     "--H", "1e7"], capture_output=True, text=True)
 direct = dict(zip(*[l.split(",") for l in p.stdout.strip().splitlines()]))
-for k in ("delta_max", "e_plastic", "T_rayleigh", "delta_rest", "tangential_error"):
+for k in ("delta_max", "e_plastic", "T_rayleigh", "delta_rest", "beta_cmd", "beta_history"):
     check(k in direct and abs(float(wall.get(k, "nan")) / float(direct[k]) - 1) < 1e-9,
           "scene_drop: %s %s as dclaw scene gives %s" % (k, wall.get(k), direct.get(k)))
 rc, out, err = advise([drop])

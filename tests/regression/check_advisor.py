@@ -21,6 +21,9 @@ Effects and probes:
               at (v^2 - v_stick^2)^1/2;
   roughness   the wall force at the overlap at rest, smooth against rough
               (in.probe_static);
+  tangential memory  the contact point's tangential restitution of a
+              45-degree impact, tangential history against cmd_tangential
+              (in.probe_oblique);
   time step   the elastic impact at the deck's dt against dt/50: duration
               and restitution (the error part of the advisor's rule);
   shape       the wall force of 24 superquadrics in random orientations at
@@ -50,7 +53,7 @@ TOL = 0.05
 # (name, deck, -var pairs, advisor options, effects run)
 SCENES = [
     ("example superquadric_settling", os.path.join(ROOT, "examples", "superquadric_settling", "in.superquadric_settling"),
-     [], {}, ["shape", "time step"]),
+     [], {}, ["shape", "time step", "tangential memory"]),
     ("example rough_packing, sigma_r 0.001", os.path.join(ROOT, "examples", "rough_packing", "in.rough_packing"),
      [("sigma_r", "0.001")], {}, ["roughness"]),
     ("example adhesive_settling", os.path.join(ROOT, "examples", "adhesive_settling", "in.adhesive_settling"), [], {},
@@ -60,7 +63,7 @@ SCENES = [
     ("tutorial packing, hardness 2e4 Pa", os.path.join(TUT, "packing", "in.packing"), [], {"H": 2e4}, ["plasticity"]),
     ("tutorial cohesion, w 0.01 J/m^2", os.path.join(TUT, "cohesion", "in.cohesion"), [], {"w": 0.01}, ["adhesion"]),
     ("tutorial conveyor, sigma 50 um", os.path.join(TUT, "conveyor", "in.conveyor"), [], {"sigma": 5e-5}, ["roughness"]),
-    ("drop: hard, below yield", SCENE, [("H", "1e9")], {}, ["plasticity"]),
+    ("drop: hard, below yield", SCENE, [("H", "1e9")], {}, ["plasticity", "tangential memory"]),
     ("drop: near yield", SCENE, [("H", "3e7")], {}, ["plasticity"]),
     ("drop: soft, beyond yield", SCENE, [("H", "1e7")], {}, ["plasticity"]),
     ("drop: weak adhesion", SCENE, [("w", "1e-5")], {}, ["adhesion", "sticking"]),
@@ -68,6 +71,7 @@ SCENES = [
     ("drop: fine sticky powder", SCENE, [("w", "0.5"), ("r", "2e-5"), ("E", "5e6")], {}, ["adhesion", "sticking"]),
     ("drop: smooth", SCENE, [("sigma", "1e-9")], {}, ["roughness", "time step"]),
     ("drop: coarse time step", SCENE, [("dt", "2e-5")], {}, ["time step"]),
+    ("drop: slippery (mu 0.05)", SCENE, [("mu", "0.05")], {}, ["tangential memory"]),
     ("drop: rough", SCENE, [("sigma", "2e-6")], {}, ["roughness"]),
 ]
 
@@ -145,6 +149,20 @@ def run_time_step(work, mat, m, v, dt):
         got[tag] = (n * h, rows[-1][2] / v)
     meas = max(abs(got["deck"][0] / got["fine"][0] - 1.0), abs(got["deck"][1] - got["fine"][1]))
     return max(m["duration_error"], m["restitution_error"]), meas
+
+
+def run_tangential(work, mat, m, v):
+    """the contact point's tangential restitution of a 45-degree impact, stock history against cmd_tangential"""
+    dt = m["t_c"] / 4000.0
+    beta = {}
+    for tm in ("history", "cmd_tangential"):
+        regress.run(os.path.join(ROOT, "inputs", "advisor_oblique", "in.probe_oblique"), work, tag="oblique_" + tm,
+                    variables={"dir": os.path.join(ROOT, "inputs", "advisor_oblique"), "tmodel": tm, "R": mat["R"],
+                               "rho": mat["rho"], "E": mat["E"], "nu": mat["nu"], "mu": m["in_mu"], "v": repr(v),
+                               "vt": repr(v), "dt": repr(dt), "steps": int(2 * m["t_c"] / dt)})
+        last = regress.table(os.path.join(work, "probe.txt"))[-1]
+        beta[tm] = (last[2] - mat["R"] * last[4]) / v
+    return abs(m["beta_cmd"] - m["beta_history"]), abs(beta["cmd_tangential"] - beta["history"])
 
 
 def run_roughness(work, mat, m):
@@ -233,6 +251,9 @@ def main():
                     c.true(meas > 0 and 0.5 <= pred / meas <= 2.0, "%s: rebound speed predicted %.3g, measured %.3g (factor 2)"
                            % (name, pred, meas))
                 continue
+            elif eff == "tangential memory":
+                pred, meas = run_tangential(wd, mat, m, v)
+                richer = needs[eff] == "cmd_tangential"
             elif eff == "time step":
                 pred, meas = run_time_step(wd, mat, m, v, d.dt[0])
                 richer = pred > TOL   # the error part of the advisor's rule (the Rayleigh part is no run's)
