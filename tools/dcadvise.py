@@ -682,6 +682,30 @@ def advise(deck, opts, out):
         out.write("\ndeck lines for what the scene needs:\n")
         for ln in lines:
             out.write("  %s\n" % ln)
+    # the deck's own choice against what the contacts need
+    have = {}
+    words = deck.pair[0] if deck.pair else []
+    for key in ("model", "tangential", "cohesion"):
+        if key in words and words.index(key) + 1 < len(words):
+            have[key] = words[words.index(key) + 1]
+    normal, tang, coh = have.get("model", "-"), have.get("tangential", "-"), have.get("cohesion", "off")
+    richer = {"plasticity": ("jamari_ep", normal == "jamari_ep"),
+              "adhesion": ("jkr_elliptic", normal == "jkr_elliptic" or coh not in ("off", "-")),
+              "roughness": ("gw_rough", normal == "gw_rough"),
+              "tangential memory": ("cmd_tangential", tang == "cmd_tangential"),
+              "shape": ("hertz_elliptic", normal in ("hertz_elliptic", "jkr_elliptic", "gw_rough", "jamari_ep"))}
+    verdicts = []
+    for eff, (model, has) in richer.items():
+        needed = any(r[1] == eff and r[3].startswith(model) for r in rows)
+        assessed = any(r[1] == eff and r[3] != "-" for r in rows)
+        if needed and not has:
+            verdicts.append("%s: the contacts need %s; the deck has %s" % (eff, model, normal if eff != "tangential memory" else tang))
+        elif has and assessed and not needed and not (eff == "shape" and not any("shape" in p for p in parts)):
+            verdicts.append("%s: the deck pays for %s, which no contact needs within the tolerance" % (eff, model))
+    out.write("\nthe deck's models (%s): %s\n" % (" ".join(words[2:]) if words else "no pair_style gran",
+                                                 "as the contacts need" if not verdicts else ""))
+    for vd in verdicts:
+        out.write("  - %s\n" % vd)
     if deck.assumed:
         out.write("\nassumed:\n")
         for a in deck.assumed:

@@ -37,6 +37,14 @@ for ex in sorted(os.listdir(os.path.join(ROOT, "examples"))):
         check(rc == 0 and all("\n  %s " % e in out for e in EFFECTS) and "Traceback" not in err,
               "examples/%s/%s: exit %d, every effect (%s)" % (ex, deck, rc, err.strip()[-200:]))
 
+# the deck's own models against the contacts' needs
+rc, out, err = advise([os.path.join(ROOT, "examples", "superquadric_settling", "in.superquadric_settling")])
+check(rc == 0 and "tangential memory: the contacts need cmd_tangential; the deck has history" in out,
+      "superquadric_settling: the deck's tangential history named against the need")
+rc, out, err = advise([os.path.join(ROOT, "inputs", "advisor", "in.scene_drop"), "-var", "H", "1e9"])
+check(rc == 0 and "jamari_ep" not in out.split("the deck's models")[1],
+      "scene_drop below yield: no plasticity verdict")
+
 # the threshold scene: values from the deck, -var, and dclaw scene's numbers
 drop = os.path.join(ROOT, "inputs", "advisor", "in.scene_drop")
 tmp = tempfile.mkdtemp()
