@@ -640,7 +640,15 @@ def advise(deck, opts, out):
               need, cost(need), "tangential cmd_tangential" if need == "cmd_tangential" else "tangential history")
         else:
             R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
-        R("rolling", "not assessed (doc/advisor.md)", "-", "-", "-")
+        # rolling: how far an impact's contact rolls, against Kalker's hand-over (rollingDistanceMin 2 semi-axes)
+        if mu > 0:
+            X = m["rolled_semi_axes"]
+            R("rolling", "a 45-degree impact rolls its contact %s semi-axes; rolling_friction kalker acts after 2 "
+              "(rollingDistanceMin)%s" % (fmt(X), ": not in impacts; steady rolling over many semi-axes is not assessed"
+                                          if X < 2 else ""),
+              "no rolling model for impacts" if X < 2 else "rolling_friction kalker where contacts roll", "-", "-")
+        else:
+            R("rolling", "no friction: no creep forces", "-", "-", "-")
         # models acting apart: the contact distance they need (the set-up refuses less)
         reach_R = da["radius"] + (0.0 if wall else db["radius"])
         models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}

@@ -15,6 +15,7 @@
 #include "dc/jamari_ep.h"
 #include "dc/jkr_sphere.h"
 #include "dc/mindlin.h"
+#include "dc/rolling_kalker.h"
 #include "dc/scene.h"
 #include "dc/status.h"
 #include <math.h>
@@ -80,7 +81,8 @@ static int jkr_separation_work(double R, double Estar, double w, double *W)
    1) or spring-sliding with Mindlin's stiffness (cmd 0, LIGGGHTS' stock
    history), stepped on the Hertz patch; symplectic Euler at Tc/4000. */
 static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double Estar, double mu,
-                        const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta)
+                        const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta,
+                        double *rolled)
 {
   const dc_cmd_params cp = {mu, 0.0, 0, 0};
   const dc_classical_tangential_params sp = {DC_CT_SPRING_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_NONE, mu, 0.0, 0.0,
@@ -95,13 +97,21 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
   memset(&hc, 0, sizeof hc);
   dc_classical_tangential_state hs;
   memset(&hs, 0, sizeof hs);
-  double delta = 0.0, vn = v, slip = vt;
+  /* the rolled distance: the rolling speed of the kinematics (dc/rolling_kalker.h)
+     of a sphere (relative radius R_force, spin R omega = wR) on a plane */
+  const dc_rolling_curvature ci = {1.0 / g->R_force, 1.0 / g->R_force, {1.0, 0.0, 0.0}}, cj = {0.0, 0.0, {1.0, 0.0, 0.0}};
+  double delta = 0.0, vn = v, slip = vt, wR = 0.0;
+  *rolled = 0.0;
   for (long i = 0; i < 400000; i++) {
     delta += vn * dt;
     if (delta <= 0.0) {
       *beta = slip / vt;
       return DC_OK;
     }
+    const double dv[3] = {slip, 0.0, 0.0}, dw[3] = {0.0, wR / g->R_force, 0.0};
+    dc_rolling_kin kin;
+    if ((st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kin))) return st;
+    *rolled += kin.V * dt;
     dc_hertz_state h;
     if ((st = dc_hertz_contact(g, Estar, delta, &h))) return st;
     const dc_patch pa = {h.a, h.a, {0.0, 0.0, 0.0}, h.F, h.F, 1.0};
@@ -117,7 +127,8 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
       Ft = o.Ft[0];
     }
     vn -= h.F / me * dt;
-    slip -= 3.5 * Ft / me * dt;
+    slip -= 3.5 * Ft / me * dt;   /* the centre by F_t / m, the spin's R omega by 5/2 F_t / m */
+    wR += 2.5 * Ft / me * dt;
   }
   return DC_ENOCONV;
 }
@@ -241,21 +252,22 @@ static int cmd_scene(int argc, char **argv)
      impact, vt times its duration */
   const double slip = mu > 0.0 ? 3.0 * mu * col.Fmax / (16.0 * Gstar * imp.a) : 0.0, ut = vt * col.Tc;
   /* the oblique impact's tangential restitution under both tangential laws */
-  double beta_cmd = 0.0, beta_hist = 0.0;
-  if (mu > 0.0 && vt > 0.0 && ((st = oblique_beta(1, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_cmd)) ||
-                               (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist))))
+  double beta_cmd = 0.0, beta_hist = 0.0, rolled = 0.0, rolled_hist = 0.0;
+  if (mu > 0.0 && vt > 0.0 &&
+      ((st = oblique_beta(1, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_cmd, &rolled)) ||
+       (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist, &rolled_hist))))
     goto range;
   const char *cols =
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
     "delta_rest,a_rest,fessler,delta_n1,v_yield,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
-    "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history";
+    "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history,rolled_semi_axes";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
                         d_rest, rest.a, fessler, d_n1, v_yield, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
                         rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, jkr_break, rough_reach, W_sep,
-                        v_stick, beta_cmd, beta_hist};
+                        v_stick, beta_cmd, beta_hist, rolled / imp.a};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",
