@@ -192,6 +192,12 @@ class Deck:
 
     # --- the commands the advisor reads
     def _command(self, raw, where, depth):
+        try:
+            self._command_words(raw, where, depth)
+        except (ValueError, IndexError) as e:
+            raise DeckError("%s: cannot read '%s' (%s)" % (where, raw.strip()[:80], e))
+
+    def _command_words(self, raw, where, depth):
         line = self._strip_comment(raw).strip()
         if not line:
             return
@@ -291,8 +297,6 @@ class Deck:
                 raise DeckError("%s: property %s: values %s are not all numbers" % (where, name, " ".join(vals)))
         elif style in ("particletemplate/sphere", "particletemplate/superquadric"):
             self._template(w, where)
-        elif style == "particledistribution/discrete":
-            pass
         elif style.startswith("insert/"):
             ins = {"where": where, "vel": (0.0, 0.0, 0.0), "region": None}
             for k, word in enumerate(w):
@@ -300,8 +304,6 @@ class Deck:
                     ins["vel"] = tuple(float(x) for x in w[k + 2:k + 5])
                 elif word == "region" and k + 1 < len(w):
                     ins["region"] = w[k + 1]
-                elif word in ("insertion_face",) and k + 1 < len(w):
-                    ins["face"] = w[k + 1]
             self.inserts.append(ins)
         elif style == "gravity" and len(w) >= 5:
             g = float(w[4])

@@ -98,6 +98,8 @@ BAD = [
     (BASE.replace("variable r equal 0.5*v_d", "variable r equal 0.5*v_dd"), ["in.test:6", "dd"]),
     (BASE.replace("timestep 1e-5", ""), ["timestep"]),
     (BASE.replace("radius constant ${r}", "radius weibull 1 2"), ["in.test:11", "radius"]),
+    (BASE.replace("timestep 1e-5", "timestep 1e-5x"), ["in.test:15", "timestep"]),
+    (BASE.replace("density constant 2500", "density constant"), ["in.test:11"]),
 ]
 for text, words in BAD:
     rc, out, err = advise([deck(text)])
