@@ -59,7 +59,7 @@ _FUNCS = {"sqrt": math.sqrt, "exp": math.exp, "ln": math.log, "log": math.log10,
 
 # the commands whose values the advisor reads (variables are substituted in these only)
 READ = {"include", "atom_style", "region", "create_box", "timestep", "pair_style", "fix", "create_atoms", "set",
-        "neigh_modify", "if"}
+        "neigh_modify", "if", "read_data", "read_restart"}
 
 
 class Deck:
@@ -83,6 +83,7 @@ class Deck:
         self.inserts = []     # dict(vel, region, where)
         self.created = []     # (type, region, where) of create_atoms
         self.sets = []        # what `set group` lines give the created particles
+        self.from_file = None  # a read_data / read_restart line (particles the advisor does not read)
         self.pair = None      # (words, where)
         self.walls = []       # (words, where)
         self.atom_style = "granular"
@@ -240,6 +241,8 @@ class Deck:
             self.created.append((int(float(w[1])), w[3] if len(w) > 3 and w[2] == "region" else None, where))
         elif cmd == "set" and len(w) >= 4:
             self._set(w, where)
+        elif cmd in ("read_data", "read_restart"):
+            self.from_file = "%s (%s)" % (where, cmd)
         elif cmd == "neigh_modify" and "contact_distance_factor" in w:
             k = w.index("contact_distance_factor")
             self.cdf = (float(w[k + 1]), where)
@@ -423,7 +426,8 @@ def scene_of(deck, opts):
             parts.append(d)
     if not parts:
         raise DeckError("the deck defines no particles the advisor can read (particletemplate/sphere, "
-                        "particletemplate/superquadric, or create_atoms with set ... diameter/shape)")
+                        "particletemplate/superquadric, or create_atoms with set ... diameter/shape)%s"
+                        % ("; its particles come from a file at %s" % deck.from_file if deck.from_file else ""))
     for d in parts:
         if "radius" not in d and "shape" not in d:
             raise DeckError("%s: type %d has no radius or shape" % (d.get("where", "deck"), d["type"]))
