@@ -526,20 +526,21 @@ def advise(deck, opts, out):
                 wall_type = int(float(words[words.index("type") + 1]))
         kinds += [(i, "wall") for i in range(len(parts))]
     model_line = " ".join(deck.pair[0][2:]) if deck.pair else "(no pair_style gran)"
+    # a superquadric class: its volume-equivalent radius and one-radius force errors, once
+    for d in parts:
+        s = shape_of(d)
+        if s:
+            (sx, sy, sz), (n1, n2) = s
+            d["shape_errors"] = run_dclaw(dclaw, ["shape", "--a", sx, "--b", sy, "--c", sz, "--n1", n1, "--n2", n2])
+            d["radius"] = d["shape_errors"]["R_eq"]
     for (ia, ib) in kinds:
         da = parts[ia]
         wall = ib == "wall"
         db = None if wall else parts[ib]
         a = da["type"]
         bt = wall_type if wall else db["type"]
-        shape_rows = []
-        for (t, d) in [(a, da)] + ([] if wall else [(bt, db)]):
-            s = shape_of(d)
-            if s:
-                (sx, sy, sz), (n1, n2) = s
-                row = run_dclaw(dclaw, ["shape", "--a", sx, "--b", sy, "--c", sz, "--n1", n1, "--n2", n2])
-                d["radius"] = row["R_eq"]
-                shape_rows.append((t, row))
+        reach_R = da["radius"] + (0.0 if wall else db["radius"])   # the radius the contact distance scales
+        shape_rows = [d["shape_errors"] for d in ([da] if wall else [da, db]) if "shape_errors" in d]
         E1, nu1 = prop(deck, "youngsModulus", a), prop(deck, "poissonsRatio", a)
         E2, nu2 = prop(deck, "youngsModulus", bt), prop(deck, "poissonsRatio", bt)
         mu = prop(deck, "coefficientFriction", a, bt, required=False, default=0.0)
@@ -587,8 +588,9 @@ def advise(deck, opts, out):
                             "impact does" % (kind, fmt(m["fessler"])))
         # shape
         if shape_rows:
-            err = max(r["err_pair_max" if not wall else "err_wall_max"] for _, r in shape_rows)
-            rms = max(r["err_pair_rms" if not wall else "err_wall_rms"] for _, r in shape_rows)
+            err = max(r["err_pair_max" if not wall else "err_wall_max"] for r in shape_rows)
+            rms = max(r["err_pair_rms" if not wall else "err_wall_rms"] for r in shape_rows)
+            m["shape_error_max"], m["shape_error_rms"] = err, rms
             need = "hertz_elliptic" if err > tol else "hertz (volume-equivalent radius)"
             R("shape", "one-radius force error max %s, rms %s" % (fmt(err), fmt(rms)), need,
               cost("hertz_elliptic") if err > tol else "1x",
@@ -621,7 +623,7 @@ def advise(deck, opts, out):
               cost("jkr_elliptic") if need != "elastic law" else "1x",
               "model jkr_elliptic; fix ... property/global workOfAdhesion peratomtypepair ..." if need != "elastic law" else "-")
             if need != "elastic law":
-                cdf_need.append(1.0 + m["jkr_separation"] / (da["radius"] + (0.0 if wall else db["radius"])))
+                cdf_need.append(1.0 + m["jkr_separation"] / reach_R)
         else:
             R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
         # roughness
@@ -633,7 +635,7 @@ def advise(deck, opts, out):
                 fmt(m["rough_force_max"])), need, cost("gw_rough") if ch > tol else "1x",
               "model gw_rough; fix ... property/global surfaceRoughness peratomtype ..." if ch > tol else "-")
             if ch > tol:
-                cdf_need.append(1.0 + m["rough_reach"] / (da["radius"] + (0.0 if wall else db["radius"])))
+                cdf_need.append(1.0 + m["rough_reach"] / reach_R)
         else:
             R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
         # tangential memory: an oblique impact (tangential speed = normal speed) under both laws
@@ -656,7 +658,6 @@ def advise(deck, opts, out):
         else:
             R("rolling", "no friction: no creep forces", "-", "-", "-")
         # models acting apart: the contact distance they need (the set-up refuses less)
-        reach_R = da["radius"] + (0.0 if wall else db["radius"])
         models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}
         for law, gap, on in (("jkr_elliptic", m["jkr_separation"], w > 0), ("gw_rough", m["rough_reach"], sigma > 0)):
             need_cdf = 1.0 + gap / reach_R
@@ -729,7 +730,9 @@ def advise(deck, opts, out):
         for wng in warnings:
             out.write("  - %s\n" % wng)
     if opts.csv:
-        keys = ["kind"] + [k for k in measures[0] if k != "kind"]
+        keys = ["kind"]
+        for mm in measures:   # the union, in order: a superquadric class adds its shape errors
+            keys += [k for k in mm if k not in keys]
         with open(opts.csv, "w", newline="") as f:
             wr = csv.DictWriter(f, fieldnames=keys)
             wr.writeheader()

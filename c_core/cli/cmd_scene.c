@@ -79,7 +79,8 @@ static int jkr_separation_work(double R, double Estar, double w, double *W)
    mass m: the slip speed s changes by -7/2 F_t / m (translation and the
    rolling of both, I = 2/5 m R^2). Tangential law: Cattaneo-Mindlin (cmd
    1) or spring-sliding with Mindlin's stiffness (cmd 0, LIGGGHTS' stock
-   history), stepped on the Hertz patch; symplectic Euler at Tc/4000. */
+   history), stepped on the Hertz patch; symplectic Euler at Tc/4000.
+   rolled (NULL: not wanted): the distance the contact rolls. */
 static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double Estar, double mu,
                         const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta,
                         double *rolled)
@@ -101,17 +102,19 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
      of a sphere (relative radius R_force, spin R omega = wR) on a plane */
   const dc_rolling_curvature ci = {1.0 / g->R_force, 1.0 / g->R_force, {1.0, 0.0, 0.0}}, cj = {0.0, 0.0, {1.0, 0.0, 0.0}};
   double delta = 0.0, vn = v, slip = vt, wR = 0.0;
-  *rolled = 0.0;
+  if (rolled) *rolled = 0.0;
   for (long i = 0; i < 400000; i++) {
     delta += vn * dt;
     if (delta <= 0.0) {
       *beta = slip / vt;
       return DC_OK;
     }
-    const double dv[3] = {slip, 0.0, 0.0}, dw[3] = {0.0, wR / g->R_force, 0.0};
-    dc_rolling_kin kin;
-    if ((st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kin))) return st;
-    *rolled += kin.V * dt;
+    if (rolled) {
+      const double dv[3] = {slip, 0.0, 0.0}, dw[3] = {0.0, wR / g->R_force, 0.0};
+      dc_rolling_kin kin;
+      if ((st = dc_rolling_kinematics(n, &ci, &cj, dv, dw, &kin))) return st;
+      *rolled += kin.V * dt;
+    }
     dc_hertz_state h;
     if ((st = dc_hertz_contact(g, Estar, delta, &h))) return st;
     const dc_patch pa = {h.a, h.a, {0.0, 0.0, 0.0}, h.F, h.F, 1.0};
@@ -182,7 +185,7 @@ static int cmd_scene(int argc, char **argv)
   }
   /* the pair: E*, G*, effective radius and mass (a wall: rigid in mass, its own modulus) */
   const double Estar = 1.0 / ((1.0 - nu1 * nu1) / E1 + (1.0 - nu2 * nu2) / E2);
-  const double Gstar = 1.0 / (2.0 * (2.0 - nu1) * (1.0 + nu1) / E1 + 2.0 * (2.0 - nu2) * (1.0 + nu2) / E2);
+  const double Gstar = 1.0 / (2.0 * mp.s0 - mp.s1);   /* 1 / sum (2 - nu_i)/G_i */
   const double R = wall ? R1 : R1 * R2 / (R1 + R2);
   const double m1 = 4.0 / 3.0 * M_PI * R1 * R1 * R1 * rho1, m2 = wall ? 0.0 : 4.0 / 3.0 * M_PI * R2 * R2 * R2 * rho2;
   const double me = wall ? m1 : m1 * m2 / (m1 + m2);
@@ -252,10 +255,10 @@ static int cmd_scene(int argc, char **argv)
      impact, vt times its duration */
   const double slip = mu > 0.0 ? 3.0 * mu * col.Fmax / (16.0 * Gstar * imp.a) : 0.0, ut = vt * col.Tc;
   /* the oblique impact's tangential restitution under both tangential laws */
-  double beta_cmd = 0.0, beta_hist = 0.0, rolled = 0.0, rolled_hist = 0.0;
+  double beta_cmd = 0.0, beta_hist = 0.0, rolled = 0.0;
   if (mu > 0.0 && vt > 0.0 &&
       ((st = oblique_beta(1, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_cmd, &rolled)) ||
-       (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist, &rolled_hist))))
+       (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist, NULL))))
     goto range;
   const char *cols =
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"

@@ -293,8 +293,7 @@ def main():
                 pred, meas = run_roughness(wd, mat, m)
                 richer = needs[eff] == "gw_rough"
             elif eff == "shape":
-                sm = run_dclaw_shape(part)
-                pred, pred_rms = sm["err_wall_max"], sm["err_wall_rms"]
+                pred, pred_rms = m["shape_error_max"], m["shape_error_rms"]
                 meas, meas_rms = run_shape(wd, m, part, rng)
                 richer = needs[eff] == "hertz_elliptic"
                 out.append((name, "shape rms", pred_rms, meas_rms))
@@ -314,11 +313,6 @@ def main():
         for r in out:
             wr.writerow([r[0], r[1], "%.4g" % r[2], "%.4g" % r[3]])
     c.finish()
-
-
-def run_dclaw_shape(part):
-    (a, b, cc), (n1, n2) = part["shape"], part.get("blockiness", (2.0, 2.0))
-    return dcadvise.run_dclaw(regress.DCLAW, ["shape", "--a", a, "--b", b, "--c", cc, "--n1", n1, "--n2", n2])
 
 
 if __name__ == "__main__":
