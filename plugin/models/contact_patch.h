@@ -81,6 +81,16 @@ private:
   bool read_;                 /* a sub-model reads current_ */
 };
 
+/* The summits' patch of a rough contact (gw_rough: dc_rough_tangential_axes
+   on the smooth patch's forces and axis), for a tangential model with
+   tangentialRoughness on. The normal model offers it as "dc_rough_patch"
+   in its postSettings and fills it in every call once a reader, in its own
+   (later) postSettings, has set wanted. Data plumbing only. */
+struct RoughPatchSlot {
+  dc_patch patch;
+  bool wanted;
+};
+
 /* Tangential, rolling and twisting models: the patch of the contact. */
 class ContactPatchReader {
 public:

@@ -443,6 +443,8 @@ protected:
   {
     if (patch.active()) patch.clear(d);
   }
+  /* The patch of this evaluation as published (with the patch active). */
+  const dc_patch &patchPublished() { return patch.next(); }
   /* Whether the contact patch is stored; the major-axis direction is worth
      computing only then. */
   bool patchStored() const { return patch.active(); }

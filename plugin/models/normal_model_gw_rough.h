@@ -56,6 +56,7 @@ NORMAL_MODEL(GW_ROUGH,gw_rough,@DC_MODEL_ID@)
 #include "dc/gw_rough_plastic.h"
 #include "dc/gw_rough_table.h"
 #include "dc/mindlin.h"
+#include "dc/rough_tangential.h"
 
 namespace LIGGGHTS {
 namespace ContactModels {
@@ -67,8 +68,9 @@ public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     DcNormalModel(lmp, hsetup, c, "gw_rough"),
     roughness(NULL), mu(NULL), n_asp(NULL), gwElliptic(false), fengFitted(false), gwPlastic(false),
-    sphereLaw(DC_GW_SPHERE_TABULATED), ntypes(0), offeredTo(0)
+    sphereLaw(DC_GW_SPHERE_TABULATED), ntypes(0), offeredTo(0), roughOfferedTo(0)
   {
+    memset(&rough, 0, sizeof rough);
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
 #endif
@@ -77,6 +79,7 @@ public:
   ~NormalModel()
   {
     if (offeredTo) ContactSlots::withdraw(offeredTo, "gw_rough_elliptic");
+    if (roughOfferedTo) ContactSlots::withdraw(roughOfferedTo, "dc_rough_patch");
   }
 
   void registerSettings(Settings &settings)
@@ -101,6 +104,9 @@ public:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.setup(lmp, c);
 #endif
+    /* for cmd_tangential with tangentialRoughness on */
+    ContactSlots::offer(c, "dc_rough_patch", &rough);
+    roughOfferedTo = c;
     /* for cohesion gw_adhesion, which adds to the elliptic closed form */
     if (gwElliptic) {
       ContactSlots::offer(c, "gw_rough_elliptic", this);
@@ -162,26 +168,53 @@ public:
   {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     const double sigma = roughness[scdata.itype][scdata.jtype];
-    if (sigma == 0.0) return publishNone(scdata);
+    if (sigma == 0.0) return apart(scdata);
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
-      if (!gap.closeOverlap(lmp, sidata, reachSigma() * sigma, delta, vn)) return publishNone(scdata);
+      if (!gap.closeOverlap(lmp, sidata, reachSigma() * sigma, delta, vn)) return apart(scdata);
     } else
 #endif
     {
       /* most pairs inside the contact distance are farther apart than the reach */
       const double reach = sidata.radsum + reachSigma() * sigma;
-      if (!sidata.is_wall && sidata.rsq >= reach * reach) return publishNone(scdata);
+      if (!sidata.is_wall && sidata.rsq >= reach * reach) return apart(scdata);
       delta = closeSphereContact(scdata, vn);
     }
-    if (delta <= -reachSigma() * sigma) return publishNone(scdata);
+    if (delta <= -reachSigma() * sigma) return apart(scdata);
     sidata.has_force_update = true;
     roughForce(sidata, delta, vn, i_forces, j_forces);
   }
 
 private:
+  /* No rough force: no patch, smooth or rough. */
+  void apart(SurfacesCloseData &scdata)
+  {
+    publishNone(scdata);
+    if (rough.wanted) memset(&rough.patch, 0, sizeof rough.patch);
+  }
+
+  /* The summits' patch (rough.wanted): the smooth patch just published with
+     the summits' semi-axes (dc/rough_tangential.h; n_asp 1 for the
+     rough-sphere laws, which have no asperityCount) and the major axis
+     also before touch; sigma = 0: the smooth patch itself. */
+  void publishRough(const dc_hertz_geom &g, double sigma, double delta, int itype, int jtype, const double *ax)
+  {
+    rough.patch = patchPublished();
+    if (sigma == 0.0) return;
+    double a, b;
+    const int st = dc_rough_tangential_axes(&g, gwElliptic ? n_asp[itype][jtype] : 1.0, sigma, delta, &a, &b);
+    if (st != DC_OK) {
+      char msg[256];
+      snprintf(msg, sizeof msg, "the summits' patch at overlap %g, roughness %g: %s", delta, sigma, dc_status_str(st));
+      stop(false, msg);
+    }
+    rough.patch.a = a;
+    rough.patch.b = b;
+    for (int k = 0; k < 3; k++) rough.patch.axis[k] = a > b && ax ? ax[k] : 0.0;
+  }
+
   /* The force's reach before touch in units of sigma: 3 (Feng, the
      closed form) or 6 (the tabulated sphere law). */
   double reachSigma() const { return gwElliptic ? 3.0 : -dc_gw_sphere_reach(sphereLaw); }
@@ -254,6 +287,7 @@ private:
       dc_contact c;
       dc_gw_rough_normal(gp, Y, delta, P, Sn, &c);
       publish(sidata, c, ax);
+      if (rough.wanted) publishRough(*gp, sigma, delta, itype, jtype, ax);
     }
   }
 
@@ -275,6 +309,8 @@ private:
   double **roughness, **mu, **n_asp;
   bool gwElliptic, fengFitted, gwPlastic;
   const ContactModelBase *offeredTo;   /* the contact model offered "gw_rough_elliptic" */
+  const ContactModelBase *roughOfferedTo;   /* ... and "dc_rough_patch" */
+  RoughPatchSlot rough;
   Plasticity plasticity;
   int ntypes;
   int sphereLaw;   /* DC_GW_SPHERE_* */

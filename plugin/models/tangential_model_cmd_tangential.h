@@ -9,6 +9,10 @@
      cmdTwisting on|off     Mindlin twisting moment about the contact normal (default off)
      cmdDissipation on|off  tangential viscoelastic dissipation, review Eq. 85 (default off;
                             property tangentialViscoelasticTime peratomtypepair [s])
+     tangentialRoughness on|off  with model gw_rough: the summits' stiffness (Hisakado-
+                            Tsukizoe, review Eq. 83; dc/rough_tangential.h), also
+                            before touch, in place of the smooth contact's (default off;
+                            not with cmdTwisting)
    Properties: coefficientFriction (peratomtypepair, >= 0), youngsModulus and
      poissonsRatio (peratomtype: Mindlin's stiffness of each pair of bodies).
    The contact patch (semi-axes, major axis, friction load, formed flag)
@@ -34,6 +38,7 @@ TANGENTIAL_MODEL(TANGENTIAL_CMD,cmd_tangential,@DC_MODEL_ID@)
 #include "contact_frame.h"
 #include "contact_models.h"
 #include "contact_patch.h"
+#include "contact_slot.h"
 #include "error.h"
 #include "rolling_contact.h"
 #include "global_properties.h"
@@ -54,7 +59,7 @@ class TangentialModel<TANGENTIAL_CMD> : public TangentialModelBase
 public:
   TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     TangentialModelBase(lmp, hsetup, c), coeffFrict(NULL), tvisc(NULL), twisting(false), dissipation(false),
-    history_offset(-1), ntypes(0)
+    roughness(false), history_offset(-1), ntypes(0), rough(NULL)
   {
     patch.request(c);
     handover.attach(c);
@@ -64,6 +69,7 @@ public:
   {
     settings.registerOnOff("cmdTwisting", twisting, false);
     settings.registerOnOff("cmdDissipation", dissipation, false);
+    settings.registerOnOff("tangentialRoughness", roughness, false);
     handover.registerSettings(settings);
   }
 
@@ -76,6 +82,12 @@ public:
   {
     patch.setup(lmp, c);
     handover.setup(lmp, hsetup);
+    if (roughness) {
+      rough = ContactSlots::find<RoughPatchSlot>(c, "dc_rough_patch");
+      if (!rough) stop("tangentialRoughness on needs the normal model gw_rough (its summits' patch)");
+      if (twisting) stop("tangentialRoughness on does not take cmdTwisting on (no twisting law for summits)");
+      rough->wanted = true;
+    }
     const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
     const int need = neighbor->oneatom * (nfields + 40);
     if (neighbor->pgsize < need) neighbor->pgsize = need;
@@ -187,7 +199,7 @@ private:
     const int k = sidata.itype * (ntypes + 1) + sidata.jtype;
     const double dt = update->dt;
     dc_patch stock;
-    const dc_patch &p = patch.read(sidata, stock);
+    const dc_patch &p = rough ? rough->patch : patch.read(sidata, stock);
     const double du[3] = {vtr[0] * dt, vtr[1] * dt, vtr[2] * dt};
     double dphi = 0.0;
     if (twisting) {
@@ -229,8 +241,9 @@ private:
   }
 
   double **coeffFrict, **tvisc;
-  bool twisting, dissipation;
+  bool twisting, dissipation, roughness;
   int history_offset, ntypes;
+  RoughPatchSlot *rough;   /* tangentialRoughness on: gw_rough's summits' patch */
   std::vector<dc_cmd_params> params;
   std::vector<dc_mindlin_pair> pairs;
   ContactPatchReader patch;

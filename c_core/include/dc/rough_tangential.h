@@ -45,6 +45,27 @@ extern "C" {
 int dc_rough_tangential_stiffness(double G, double chi, double n_asp, double R_asp,
                                   double sigma, double delta, double *kt);
 
+/* The summits' contact patch for a tangential law (Eq. 83 as one
+   Mindlin contact): semi-axes
+
+     a_r = n_asp (R_asp sigma)^1/2 F_1/2(h),  b_r = a_r (1 - e^2)^1/2,
+     R_asp = 2 R_major D/K,  h = -delta/sigma,
+
+   the ellipse of the contact's eccentricity whose Mindlin no-slip
+   stiffness (proportional to its semi-axis, dc_cmd_stiffness) is Eq. 83's
+   k_t: 2 pi G chi a_r = 2 pi n_asp G chi (R_asp sigma)^1/2 F_1/2(h).
+   R_asp is the smooth contact's a^2/delta (dc_hertz_contact: a sphere's
+   R), so that as sigma -> 0 (sigma^1/2 F_1/2(h) -> delta^1/2) the patch
+   becomes n_asp times the Hertz ellipse: with n_asp = 1 the smooth law's
+   stiffness. For sigma <= 1e-80 delta and for sigma = 0 the Hertz
+   expression itself (dc_hertz_contact's a: the same bits for n_asp = 1);
+   sigma = 0 and delta <= 0 give 0. Before touch (delta < 0, sigma > 0)
+   the summits alone carry the patch (0 where F_1/2 underflows, h > ~38).
+   g from dc_hertz_geometry. Domain: n_asp > 0, sigma >= 0, delta, all
+   finite; DC_EDOM outside, DC_ERANGE (outputs untouched) when a_r
+   overflows. */
+int dc_rough_tangential_axes(const dc_hertz_geom *g, double n_asp, double sigma, double delta, double *a, double *b);
+
 #ifdef __cplusplus
 }
 #endif
