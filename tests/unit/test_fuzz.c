@@ -1073,6 +1073,34 @@ static void fuzz_rough_tangential(void)
               "G %.17g chi %.17g n_asp %.17g R_asp %.17g sigma %.17g delta %.17g", G, chi, n, R, sg, d);
   }
   fz_done(f);
+  f = fz_new("dc_rough_tangential_axes");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double n = A(U() < 0.4 ? fz_log(1e-2, 1e6) : U() < 0.1 ? PICK(0.0, -1.0, DBL_TRUE_MIN) : fz_pos());
+    const double sg = A(U() < 0.4 ? g->R_major * fz_log(1e-9, 1e-3)
+                                  : U() < 0.2 ? PICK(0.0, DBL_TRUE_MIN, DBL_MIN, -1e-9) : fz_pos());
+    const double d = A(U() < 0.5 ? sg * (-12.0 + 60.0 * U()) : U() < 0.1 ? PICK(0.0, -0.0) : fz_wide());
+    const int bad = !ALLFIN(n, sg, d);
+    double a, b;
+    SENTINEL(a);
+    SENTINEL(b);
+    const int st = dc_rough_tangential_axes(g, n, sg, d, &a, &b);
+    FZ_CHECK(f, st, bad, !bad && n > 0.0 && sg >= 0.0, UNTOUCHED(a) && UNTOUCHED(b),
+             isfinite(a) && isfinite(b) && a >= 0.0 && b >= 0.0 && b <= a,
+             "R_major %.17g R_minor %.17g n_asp %.17g sigma %.17g delta %.17g", g->R_major, g->R_minor, n, sg, d);
+    /* a_r <= n (2 R_major (sigma + |delta|))^1/2 F_1/2(0) 2^1/2 (D/K <= 1) */
+    const double bd = lg(n) + 0.5 * (lg(2.0 * g->R_major) + lg(sg + fabs(d)));
+    FZ_EXPECT(f, st != DC_ERANGE || bd > LOG_MAX - 2.0, "DC_ERANGE for representable semi-axes",
+              "R_major %.17g n_asp %.17g sigma %.17g delta %.17g", g->R_major, n, sg, d);
+    /* the smooth limit is the Hertz semi-axis (dc_hertz_contact) times n_asp */
+    if (st == DC_OK && (sg == 0.0 || sg <= 1e-80 * fabs(d)) && d > 0.0 && n == 1.0) {
+      dc_hertz_state hs;
+      if (dc_hertz_contact(g, 1.0, d, &hs) == DC_OK)
+        FZ_EXPECT(f, a == hs.a && b == hs.b, "smooth limit: not the Hertz ellipse", "delta %.17g", d);
+    }
+  }
+  fz_done(f);
 }
 
 /* ---------------------------------------------------------------- */
