@@ -1,0 +1,125 @@
+#!/usr/bin/env python3
+"""Regression: rough tangential contact (tangential cmd_tangential with
+tangentialRoughness on over gw_rough gwElliptic on; inputs/rough_shear).
+- A rough sphere (R = 1 mm) held on a smooth wall at overlap d0 and sheared
+  at constant load, sigma/delta from 0.01 to 10 and before touch (d0 < 0):
+  the normal force is the GW closed form 4/3 E* R^1/2 sigma^3/2 F_3/2(h)
+  and the tangential force follows Mindlin's virgin curve
+  F = mu Fn [1 - (1 - k u / (3/2 mu Fn))^3/2] to gross sliding at mu Fn,
+  with the summits' stiffness k = 8 a_r / (2 s0 - s1), a_r = (R sigma)^1/2
+  F_1/2(h) (review Eq. 83): F_1/2, F_3/2 from the mpmath quadrature of
+  tests/reference/rough_shear.csv, the rest evaluated here;
+- the smooth limit: sigma = 0 gives the smooth cmd_tangential run bit for
+  bit, sigma = 1e-9 delta within 1e-12; before touch the smooth law has no
+  patch (no tangential force);
+- three rough ellipsoids held and moved along their contact ellipse's
+  axes and at 45 degrees (in.rough_shear_superquadric): Mindlin's no-slip
+  stiffnesses of the summits' ellipse (review Eqs. 56-59) with the contact's
+  eccentricity, elliptic Hertz geometry evaluated here (regress.py).
+Usage: check_rough_shear.py WORKDIR"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from regress import ROOT, ellipke, elliptic_contact, run, start, table
+
+work, _, c = start()
+E, nu, mu, R = 5e6, 0.3, 0.5, 1e-3
+G = E / (2 * (1 + nu))
+Estar = 1.0 / (2 * (1 - nu ** 2) / E)
+s0, s1 = 2 / G, 2 * nu / G
+F = {}
+for line in open(os.path.join(ROOT, "tests", "reference", "rough_shear.csv")):
+    if line[0] in "#h":
+        continue
+    h, f12, f32 = line.strip().split(",")
+    F[h] = (float(f12), float(f32))
+
+
+def shear(tag, sigma, d0, s, tset=None):
+    variables = {"sigma": sigma, "d0": d0, "s": "%.12g" % s}
+    if tset is not None:
+        variables["tset"] = tset
+    d = os.path.join(work, tag)
+    run("rough_shear/in.rough_shear", d, variables=variables, tag=tag)
+    return table(os.path.join(d, "shear.txt"))
+
+
+# the sphere at constant load, sigma/delta 0.01 .. 10 and before touch
+cases = [("1e-8", "1e-6", "-100"), ("1e-7", "1e-6", "-10"), ("1e-6", "1e-6", "-1"), ("3e-6", "1e-6", "-1/3"),
+         ("1e-5", "1e-6", "-0.1"), ("1e-6", "-1e-6", "1")]
+for sig, d0, h in cases:
+    sigma, delta = float(sig), float(d0)
+    f12, f32 = F[h]
+    Fn = 4.0 / 3.0 * Estar * math.sqrt(R) * sigma ** 1.5 * f32   # circle: Rc^1/2 gamma = R^1/2
+    k = 8 * math.sqrt(R * sigma) * f12 / (2 * s0 - s1)
+    us = 1.5 * mu * Fn / k
+    rows = shear("sphere_%s_%s" % (sig, d0), sig, d0, math.ceil(2.5 * us / 1e-9) * 1e-9)
+    tag = "sigma/delta %g, h %s" % (sigma / delta, h)
+    c.true(max(abs(r[2] - (R - delta)) for r in rows) < 1e-15,
+           "%s: the sphere held at z = R - d0 while sheared" % tag)
+    worst_n = max(abs(r[4] / Fn - 1) for r in rows)
+    c.true(worst_n < 1e-9, "%s: normal force %.9g N vs the GW closed form %.9g N: worst %.3g (tol 1e-9)"
+           % (tag, rows[0][4], Fn, worst_n))
+    worst_t = 0.0
+    for r in rows:
+        u = r[1]
+        want = mu * Fn * (1 - (1 - u / us) ** 1.5) if u < us else mu * Fn
+        worst_t = max(worst_t, abs(-r[3] - want) / (mu * Fn))
+    c.true(worst_t < 1e-9, "%s: tangential force vs Mindlin's virgin curve with the summits' stiffness %.6g N/m "
+           "(slip at %.4g m, %d rows): worst %.3g mu Fn (tol 1e-9)" % (tag, k, us, len(rows), worst_t))
+    c.true(abs(-rows[-1][3] / (mu * Fn) - 1) < 1e-12, "%s: gross sliding at mu Fn" % tag)
+    if delta > 0:
+        a_s = math.sqrt(R * delta)
+        print("     %s: summits' stiffness / smooth Mindlin stiffness at the same overlap = %.6f"
+              % (tag, math.sqrt(R * sigma) * f12 / a_s))
+    else:
+        smooth = shear("sphere_before_touch_smooth", sig, d0, 2e-6, tset="")
+        c.true(all(r[3] == 0.0 for r in smooth) and smooth[0][4] > 0,
+               "before touch: the smooth law (no patch) gives no friction, the summits %.4g N at sliding"
+               % (mu * Fn))
+
+# smooth limit
+on = shear("smooth_on", "0", "1e-6", 2e-6)
+off = shear("smooth_off", "0", "1e-6", 2e-6, tset="")
+c.true(on == off, "sigma = 0: tangentialRoughness on equals the smooth cmd_tangential run bit for bit (%d rows)"
+       % len(on))
+tiny = shear("smooth_tiny", "1e-15", "1e-6", 2e-6)
+worst = max(max(abs(a[3] - b[3]) / abs(b[4]), abs(a[4] / b[4] - 1)) for a, b in zip(tiny, off))
+c.true(len(tiny) == len(off) and worst < 1e-12,
+       "sigma = 1e-9 delta: the smooth run within %.3g of the normal force (tol 1e-12)" % worst)
+
+# rough ellipsoids: the summits' elliptic patch
+a1, b1, c1 = 1.0e-3, 0.6e-3, 1.5e-3
+Rmaj, Rmin = a1 * a1 / c1, b1 * b1 / c1
+ds = 1e-6   # any overlap: the smooth contact's a^2/delta, b/a and R_force
+a_s, b_s, F_s = elliptic_contact(Rmaj, Rmin, Estar, ds)
+R_asp, ratio = a_s * a_s / ds, b_s / a_s
+R_force = (0.75 * F_s / Estar) ** 2 / ds ** 3
+m = 1 - ratio * ratio
+K, Ee = ellipke(m)
+D = (K - Ee) / m
+s = 2e-7
+for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
+    sigma = float(sig)
+    f12, f32 = F[h]
+    a_r = math.sqrt(R_asp * sigma) * f12
+    Fn = 4.0 / 3.0 * Estar * math.sqrt(R_force) * sigma ** 1.5 * f32
+    k_major = 2 * math.pi * a_r / (2 * ((1 - nu) * K + nu * D) / G)
+    k_minor = 2 * math.pi * a_r / (2 * (K - nu * D) / G)
+    d = os.path.join(work, "ellipsoids_%s" % d0)
+    run("rough_shear/in.rough_shear_superquadric", d, variables={"sigma": sig, "d0": d0, "s": s}, tag="ellipsoids")
+    for r in table(os.path.join(d, "shear.txt")):
+        ang = math.radians(r[1])
+        sx, sy = s * math.cos(ang), s * math.sin(ang)
+        wx, wy = k_major * sx, k_minor * sy
+        wl = math.hypot(wx, wy)
+        Ft = mu * Fn * (1 - (1 - 2 * wl / (3 * mu * Fn)) ** 1.5)
+        want = (-Ft * wx / wl, -Ft * wy / wl)
+        tag = "ellipsoid, h %s, %g deg" % (h, r[1])
+        c.rel(r[7], Fn, 1e-9, "%s: normal force vs the GW closed form" % tag)
+        err = math.hypot(r[5] - want[0], r[6] - want[1]) / Ft
+        c.true(err < 1e-9, "%s: tangential force (%.6g, %.6g) N vs Mindlin on the summits' ellipse (%.6g, %.6g): "
+               "%.3g (tol 1e-9)" % (tag, r[5], r[6], want[0], want[1], err))
+c.finish()
