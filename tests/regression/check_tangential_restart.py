@@ -4,7 +4,10 @@
 (write_restart at step 13700, after the first reversal) and continued with
 read_restart reproduces the uninterrupted run to every printed digit: the
 load history (turning points, slip profile) travels in LIGGGHTS' contact
-history through the restart file.
+history through the restart file. The same for two rough spheres (gw_rough
+gwElliptic on, sigma 1e-6 per sphere, with tangentialRoughness on: the
+summits' patch), which also run on 2 MPI ranks, one sphere on each, equal
+to 1 rank digit for digit.
 Usage: check_tangential_restart.py WORKDIR"""
 import os
 import shutil
@@ -38,4 +41,32 @@ c.true(max(fs) > fs[-1] > min(fs[k0 // 2:]) and fs[-1] < fs[-2],
 c.true(half == full[:k0], "the first part equals the uninterrupted run (%d rows)" % len(half))
 same = len(res) == len(full) - k0 and all(a[1:] == b[1:] for a, b in zip(res, full[k0:]))
 c.true(same, "continued from the restart file: %d rows equal the uninterrupted run's digit for digit" % len(res))
+
+# rough spheres, tangentialRoughness on: restart and 2 ranks
+rough = {"dir": D, "nmodel": "gw_rough", "nset": "gwElliptic on tangentialRoughness on", "sigma": 1e-6,
+         "cdf": 1.01, "x1": -0.001}
+out = {}
+for tag, ranks, extra in (("rough_full", 1, {}), ("rough_np2", 2, {}), ("rough_half", 1, {"steps": STOP, "restart": 1})):
+    v = dict(rough)
+    v.update(extra)
+    run("tangential_restart/in.tangential_restart", os.path.join(work, tag), ranks=ranks, variables=v, tag=tag)
+    out[tag] = rows(os.path.join(work, tag, "loop.txt"))
+os.makedirs(os.path.join(work, "rough_resumed"), exist_ok=True)
+shutil.copy(os.path.join(work, "rough_half", "loop.restart"), os.path.join(work, "rough_resumed"))
+v = dict(rough)
+v.update({"steps": 30000 - STOP})
+del v["x1"]
+run("tangential_restart/in.tangential_restart_resume", os.path.join(work, "rough_resumed"), variables=v,
+    tag="rough_resumed")
+rfull, rres = out["rough_full"], rows(os.path.join(work, "rough_resumed", "loop.txt"))
+rf = [float(r[2]) for r in rfull]
+c.true(max(abs(a - b) for a, b in zip(rf, fs + [float(r[2]) for r in full[k0:]])) > 1e-3 * max(rf),
+       "rough spheres: the summits' law differs from the smooth one (force amplitude %.4g N against %.4g N)"
+       % (max(rf), max(float(r[2]) for r in full)))
+c.true(out["rough_half"] == rfull[:k0], "rough spheres: the first part equals the uninterrupted run")
+c.true(len(rres) == len(rfull) - k0 and all(a[1:] == b[1:] for a, b in zip(rres, rfull[k0:])),
+       "rough spheres, continued from the restart file: %d rows equal the uninterrupted run's digit for digit"
+       % len(rres))
+c.true(out["rough_np2"] == rfull, "rough spheres on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit"
+       % len(rfull))
 c.finish()
