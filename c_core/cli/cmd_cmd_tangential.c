@@ -4,10 +4,16 @@
    reloading -u* -> u* (the loop of review Eqs. 59, 67), or (--summary 1)
    one row with the no-slip stiffness, the slip displacement, the amplitude
    and the energy dissipated per cycle (the loop's area, trapezoid rule)
-   beside review Eq. 69. */
+   beside review Eq. 69. With --sigma > 0 the contact is rough (the deck's
+   gw_rough gwElliptic on with tangentialRoughness on): Fn held on the GW
+   closed form, the summits' patch of dc/rough_tangential.h. */
 #include "cli.h"
 #include "dc/cmd_tangential.h"
+#include "dc/gw_rough.h"
+#include "dc/hertz_elliptic.h"
 #include "dc/mindlin.h"
+#include "dc/root_find.h"
+#include "dc/rough_tangential.h"
 #include "dc/status.h"
 #include <math.h>
 #include <stdio.h>
@@ -27,6 +33,20 @@ static int leg(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch 
   return DC_OK;
 }
 
+/* The GW closed form's force less Fn at overlap x (the circle of radius R). */
+typedef struct {
+  dc_hertz_geom g;
+  double Estar, n, sigma, Fn;
+} rough_load;
+
+static double rough_excess(double x, void *ctx, int slot)
+{
+  (void)slot;
+  const rough_load *L = (const rough_load *)ctx;
+  dc_gw_rough_state s;
+  return dc_gw_rough_elliptic(&L->g, L->Estar, L->n, L->sigma, x, &s) == DC_OK ? s.F - L->Fn : NAN;
+}
+
 static int cmd_cmd_tangential(int argc, char **argv)
 {
   dc_cli_option o[] = {
@@ -40,8 +60,12 @@ static int cmd_cmd_tangential(int argc, char **argv)
     {"n", DC_CLI_N_HELP " on each leg", 11, 0},
     {"steps", "law steps between printed rows (the step size of a DEM run)", 64, 0},
     {"summary", "1: print stiffness, slip displacement, amplitude and energy per cycle only", 0, 0},
+    {"sigma", "rms summit height of the contact [m] (deck: surfaceRoughness); > 0: rough, Fn on the GW closed "
+              "form and the summits' patch (tangentialRoughness on)", 0, 0},
+    {"nasp", "summits n_asp of the GW closed form (deck: asperityCount), with --sigma", 1, 0},
     {0, 0, 0, 0}};
-  int st = dc_cli_parse(argc, argv, o, "--R R --E E --nu nu --Fn F --mu mu [--r r | --u u] [--n N] [--steps S] [--summary 1]");
+  int st = dc_cli_parse(argc, argv, o, "--R R --E E --nu nu --Fn F --mu mu [--r r | --u u] [--n N] [--steps S] "
+                        "[--summary 1] [--sigma S [--nasp N]]");
   if (st) return st == 1 ? 0 : st;
   int n, steps;
   if (dc_cli_count(argv[0], o, "n", &n) || dc_cli_count(argv[0], o, "steps", &steps)) return 2;
@@ -63,7 +87,28 @@ static int cmd_cmd_tangential(int argc, char **argv)
     return 2;
   }
   /* Hertz: a^3 = 3 Fn R / (4 E*), E* = E / (2 (1 - nu^2)); Mindlin: k0 = 8 G* a */
-  const double Estar = E / (2.0 * (1.0 - nu * nu)), a = cbrt(3.0 * Fn * R / (4.0 * Estar));
+  const double Estar = E / (2.0 * (1.0 - nu * nu));
+  double a = cbrt(3.0 * Fn * R / (4.0 * Estar)), delta = a * a / R;
+  const double sigma = dc_cli_get(o, "sigma"), nasp = dc_cli_get(o, "nasp");
+  if (!(sigma >= 0.0 && isfinite(sigma)) || !(nasp > 0.0 && isfinite(nasp))) {
+    fprintf(stderr, "dclaw cmd_tangential: --sigma, --nasp: need sigma >= 0 and nasp > 0 (got %g, %g)\n", sigma, nasp);
+    return 2;
+  }
+  if (sigma > 0.0) {
+    /* the overlap holding Fn on the GW closed form: below the Hertz overlap
+       of Fn / n_asp (the rough force is the larger at any overlap) */
+    rough_load L = {{0}, Estar, nasp, sigma, Fn};
+    dc_root_result res;
+    const double hi = cbrt(3.0 * Fn / nasp * R / (4.0 * Estar));
+    double b;
+    if (dc_hertz_geometry(R, R, &L.g) != DC_OK ||
+        dc_root_brent(rough_excess, &L, -40.0 * sigma, hi * hi / R, 1e-15, 0.0, 400, &res) != DC_OK ||
+        dc_rough_tangential_axes(&L.g, nasp, sigma, res.x, &a, &b) != DC_OK) {
+      fprintf(stderr, "dclaw cmd_tangential: --sigma, --nasp, --Fn: no overlap holds Fn on the GW closed form\n");
+      return 2;
+    }
+    delta = res.x;
+  }
   double k0, kminor;
   st = dc_cmd_stiffness(&m, a, a, &k0, &kminor);
   const double muF = mu * Fn, dL = 1.5 * muF / k0;   /* review Eq. 59: slip displacement 3 mu Fn / (2 k0) */
@@ -116,10 +161,10 @@ static int cmd_cmd_tangential(int argc, char **argv)
        [1 - (1 - r)^5/3 - 5 r/6 (1 + (1 - r)^2/3)], r = F* over mu Fn */
     const double rr = fmin(Fa / muF, 1.0), q = 1.0 - rr;
     const double W69 = 36.0 * muF * muF / (5.0 * k0) * (1.0 - pow(q, 5.0 / 3.0) - 5.0 * rr / 6.0 * (1.0 + cbrt(q * q)));
-    const char *cols = "a,k0,mu_Fn,delta_slip,u_amp,F_amp,energy,energy_eq69";
+    const char *cols = "a,k0,mu_Fn,delta_slip,u_amp,F_amp,energy,energy_eq69,delta";
     printf("%s\n", cols);
-    const double v[] = {a, k0, muF, dL, u, Fa, W, W69};
-    return dc_cli_row("cmd_tangential", o, cols, 8, v);
+    const double v[] = {a, k0, muF, dL, u, Fa, W, W69, delta};
+    return dc_cli_row("cmd_tangential", o, cols, 9, v);
   }
 
   const char *cols = "leg,u,Ft,stick,kt";
@@ -143,4 +188,4 @@ fail:
 
 DC_CLI_COMMAND(cmd_tangential, cmd_cmd_tangential,
                "Cattaneo-Mindlin-Deresiewicz, circle at constant Fn: displacement loop -> tangential force, stick "
-               "fraction, stiffness; --summary 1: energy per cycle beside Eq. 69");
+               "fraction, stiffness; --summary 1: energy per cycle beside Eq. 69; --sigma: rough (summits' patch)");

@@ -219,6 +219,25 @@ for r in sorted(energy69):
     check(rc == 0 and len(rows) == 27 and worst < 1e-12,
           "cmd_tangential r %g: virgin, unloading and reloading branches within %.2g mu Fn of Eqs. 59, 67" % (r, worst))
 
+# cmd_tangential --sigma: a rough circle (the GW closed form holds Fn; the
+# summits' patch a_r = (R sigma)^1/2 F_1/2(h), k0 = 8 a_r / (2 s0 - s1))
+# against F_1/2, F_3/2 from the quadrature table (rough_shear.csv, h = -1)
+F12, F32 = next([float(x) for x in l.split(",")[1:]] for l in open(os.path.join(os.path.dirname(REF), "rough_shear.csv"))
+                if l.startswith("-1,"))
+Er, nur, Rr, sr = 5e6, 0.3, 1e-3, 1e-6
+Esr, Gr = Er / (2 * (1 - nur ** 2)), Er / (2 * (1 + nur))
+Fr = 4.0 / 3.0 * Esr * math.sqrt(Rr) * sr ** 1.5 * F32
+rc, out, _ = run(["cmd_tangential", "--R", repr(Rr), "--E", repr(Er), "--nu", repr(nur), "--Fn", repr(Fr), "--mu", "0.5",
+                  "--sigma", repr(sr), "--summary", "1"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+k_want = 8 * math.sqrt(Rr * sr) * F12 / (2 * (2 / Gr) - 2 * nur / Gr)
+check(rc == 0 and abs(got["delta"] / sr - 1) < 1e-12 and abs(got["k0"] / k_want - 1) < 1e-10,
+      "cmd_tangential --sigma 1e-6 at the GW force of h = -1: overlap %r (want 1e-6), summits' stiffness %r (want %r)"
+      % (got["delta"], got["k0"], k_want))
+rc, _, err = run(["cmd_tangential", "--sigma", "-1e-6"])
+check(rc == 2 and "--sigma" in err, "cmd_tangential --sigma -1e-6: exit 2 naming --sigma (%r)" % err.strip())
+
 # kalker: the circle's coefficients against the generator's (kalker.csv,
 # a/b = 1, nu = 0.25); Kalker's linear force F_x = -G c^2 c11 xi (G =
 # E / (2 (1 + nu)), c^2 = a b) below saturation; the linear law bounded at
