@@ -124,6 +124,15 @@ configs=(
   "seh|$sph|hertz_elliptic|10000|1|-var jitter 2e-4"
   "sep|$sph|hertz_elliptic|10000|1|-var jitter 2e-4 -var tkey contactPatch -var tval on"
   "stc|$sph|hertz_elliptic|10000|1|-var tmodel cmd_tangential -var jitter 2e-4"
+  # rough tangential: gw_rough gwElliptic on with cmd_tangential, without and
+  # with tangentialRoughness on (the summits' stiffness, also before touch:
+  # friction then acts on the contacts within 3 sigma that do not touch),
+  # and the same at sigma = 1e-12 m (the same contacts and trajectory as
+  # smooth: the setting's own cost per contact)
+  "srt|$sph|gw_rough|10000|1|-var cdf 1.12 -var gwe 1 -var tmodel cmd_tangential -var jitter 2e-4"
+  "srr|$sph|gw_rough|10000|1|-var cdf 1.12 -var gwe 1 -var tmodel cmd_tangential -var jitter 2e-4 -var tkey tangentialRoughness -var tval on"
+  "srt0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12 -var gwe 1 -var tmodel cmd_tangential -var jitter 2e-4"
+  "srr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12 -var gwe 1 -var tmodel cmd_tangential -var jitter 2e-4 -var tkey tangentialRoughness -var tval on"
   # control: configuration se again, last in the round-robin; its time
   # against se is what a best-of-REPS ratio carries as noise on this machine
   "se_again|$sph|hertz_elliptic|10000|1|"
@@ -132,7 +141,7 @@ classical_laws="springSliding coulomb viscous viscousSliding springDashpotSlidin
 for law in $classical_laws; do
   configs+=("sc_$law|$sph|hertz_elliptic|10000|1|-var tmodel classical -var jitter 2e-4 -var tkey classicalTangential -var tval $law")
 done
-contact_rows="sth seh sep st stc qe qt sre sra spe spa rt rk0 se sjp sje ssc ssc2"
+contact_rows="sth seh sep st stc qe qt sre sra spe spa rt rk0 se sjp sje ssc ssc2 srt srr srt0 srr0"
 for law in $classical_laws; do contact_rows="$contact_rows sc_$law"; done
 [ "${DC_BENCH_ONLY:-}" = contact ] && DC_BENCH_ONLY="$contact_rows se_again"
 # untimed preparation of the settled scenes: once per restart file named by
@@ -246,7 +255,9 @@ contact += [("stock hertz + cmd_tangential", "st", "sth", None),
             ("rolling_friction kalker, nothing rolling, over none", "rk0", "rt", 1.03),
             ("jamari_ep (plastic) over hertz_elliptic (unjittered)", "sjp", "se", 1.10),
             ("    jamari_ep below yield (the Hertz trajectory) over hertz_elliptic", "sje", "se", None),
-            ("speed-up 1 rank / 2 ranks, settled bed (3264), hertz_elliptic + cmd_tangential", "ssc", "ssc2", -1.85)]
+            ("speed-up 1 rank / 2 ranks, settled bed (3264), hertz_elliptic + cmd_tangential", "ssc", "ssc2", -1.85),
+            ("gw_rough gwElliptic on + cmd_tangential, sigma 1e-12: tangentialRoughness on over off", "srr0", "srt0", 1.05),
+            ("    sigma 1.5e-5 per sphere (friction also before touch)", "srr", "srt", None)]
 if any(k in t for _, k, _, _ in contact):
     print()
     print("whole-contact cost (2888 spheres jittered 2e-4, 10000 steps, 1 rank, unless named; best of runs)")
