@@ -18,9 +18,24 @@
    rate-independent counterpart and are left out.
 
    Error: max |F_t - F_t,cmd| over the path / mu F_n. Kernel call: one step
-   of the law along the path. Prints CSV (report_common.h). */
+   of the law along the path.
+
+   Rough scenes: the same spheres rough (GW closed form, sigma = 10 um per
+   contact, n_asp = 1) on the same path, at sigma = delta (h = -1) and
+   before touch (delta = -sigma, h = 1), the normal force the closed form's
+   (F_b of both). Exact law: cmd_tangential on the summits' patch of review
+   Eq. 83 with F_1/2 from its Bessel closed form (dc_gw_F_closed, GSL), the
+   slip distance its own. Laws: cmd_tangential with tangentialRoughness on
+   (dc_rough_tangential_axes every step, then the step), cmd_tangential on
+   the smooth contact's patch (a = (R delta)^1/2, none before touch) and
+   spring with sliding of Mindlin's stiffness 8 G* a (stock history).
+   Prints CSV (report_common.h). */
 #include "dc/classical_tangential.h"
 #include "dc/cmd_tangential.h"
+#include "dc/gw_integrals.h"
+#include "dc/gw_rough.h"
+#include "dc/hertz_elliptic.h"
+#include "dc/rough_tangential.h"
 #include "dc/mindlin.h"
 #include "dc/status.h"
 #include "report_common.h"
@@ -57,6 +72,11 @@ typedef struct {
 static dc_cmd_params cmdp;
 static dc_mindlin_pair pair;
 
+/* Rough scenes: the patch of the law (-2: the summits' patch computed each
+   step from the geometry, as gw_rough does for the wrapper). */
+static dc_hertz_geom rgeom;
+static double rsigma, rdelta;
+
 /* The law's force along x at every step into F (NULL: just run it). */
 static void run(const dc_classical_tangential *m, int law, double *F, double *acc)
 {
@@ -68,7 +88,13 @@ static void run(const dc_classical_tangential *m, int law, double *F, double *ac
   for (int i = 0; i < nstep; i++) {
     const double d[3] = {du[i], 0.0, 0.0}, v[3] = {du[i] / DT, 0.0, 0.0};
     double fx;
-    if (law < 0) {
+    if (law == -2) {
+      dc_cmd_out o;
+      dc_patch p = patch;
+      dc_rough_tangential_axes(&rgeom, 1.0, rsigma, rdelta, &p.a, &p.b);
+      dc_cmd_step(&cmdp, &pair, &p, NZ, d, 0.0, DT, &hc, &o);
+      fx = o.Ft[0];
+    } else if (law < 0) {
       dc_cmd_out o;
       dc_cmd_step(&cmdp, &pair, &patch, NZ, d, 0.0, DT, &hc, &o);
       fx = o.Ft[0];
@@ -128,6 +154,57 @@ int main(void)
     REPORT_TIME(ns, 1, run(&m, rows[k].law, NULL, &acc));
     report_row("tangential", "shear cycles 0.5 and 2 slip distances", rows[k].name, rows[k].exact, ns / nstep, &e,
                "max |F_t - F_t cmd_tangential| / mu F_n (rms)", "");
+  }
+
+  /* rough: sigma = delta and before touch */
+  const double sigma = 1e-5;
+  dc_hertz_geometry_circle(R, &rgeom);
+  for (int sc = 0; sc < 2; sc++) {
+    const double delta = sc == 0 ? sigma : -sigma;
+    dc_gw_rough_state rs;
+    double F12;
+    if (dc_gw_rough_elliptic(&rgeom, Estar, 1.0, sigma, delta, &rs) != DC_OK ||
+        dc_gw_F_closed(DC_GW_F12, -delta / sigma, &F12) != DC_OK)
+      return 1;
+    const double ar = sqrt(R * sigma) * F12;   /* Eq. 83 as the summits' patch: R_asp = R */
+    const double as = delta > 0.0 ? sqrt(R * delta) : 0.0;
+    dc_patch rough = {ar, ar, {0.0, 0.0, 0.0}, rs.F, rs.F, 1.0}, smooth = {as, as, {0.0, 0.0, 0.0}, rs.F, rs.F, 1.0};
+    rsigma = sigma;
+    rdelta = delta;
+    patch = rough;
+    build_path(1.5 * MU * rs.F / (8.0 * Gstar * ar));
+    run(NULL, -1, Fref, &acc);
+    const char *scene = sc == 0 ? "rough shear cycles at sigma = delta (h = -1)" : "rough shear cycles before touch (h = 1)";
+    const law_row rrows[] = {
+        {"Eq. 83 exact (F_1/2 closed form) + cmd_tangential", -1, 1},
+        {"cmd_tangential tangentialRoughness on", -2, 0},
+        {"cmd_tangential (smooth patch)", -1, 0},
+        {"springSliding: Mindlin K_t (stock history)", DC_CT_SPRING_SLIDING, 0},
+    };
+    for (size_t k = 0; k < sizeof rrows / sizeof rrows[0]; k++) {
+      dc_classical_tangential m;
+      memset(&m, 0, sizeof m);
+      patch = k >= 2 ? smooth : rough;
+      if (rrows[k].law >= 0) {
+        dc_classical_tangential_params p;
+        memset(&p, 0, sizeof p);
+        p.law = rrows[k].law;
+        p.stiffness = DC_CT_KT_MINDLIN;
+        p.damping = DC_CT_DAMP_NONE;
+        p.mu = MU;
+        p.Gstar = Gstar;
+        p.Estar = Estar;
+        dc_param_error err;
+        if (dc_classical_tangential_init(&p, &m, &err) != DC_OK) return 1;
+      }
+      run(&m, rrows[k].law, F, &acc);
+      report_err e = {0};
+      for (int i = 0; i < nstep; i++) report_err_add(&e, (F[i] - Fref[i]) / (MU * rs.F));
+      double ns;
+      REPORT_TIME(ns, 1, run(&m, rrows[k].law, NULL, &acc));
+      report_row("tangential", scene, rrows[k].name, rrows[k].exact, ns / nstep, &e,
+                 "max |F_t - F_t summits' cmd_tangential| / mu F_n (rms)", "");
+    }
   }
   report_sink = acc;
   return 0;

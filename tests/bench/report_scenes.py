@@ -74,6 +74,10 @@ CLASSICAL = [("lsd", "duration"), ("lsd", "overlap"), ("lsd", "energy"),
 for law, k in CLASSICAL:
     RUNS["%s_%s" % (law, k)] = packed(model="classical", settings="classicalNormal %s classicalStiffness %s" % (law, k),
                                       S="{S}", vchar="{vchar}")
+# rough tangential: gw_rough gwElliptic on + cmd_tangential with and without the summits' stiffness
+RUNS["gw_closed_cmd"] = timed(SPHERES, model="gw_rough", cdf="1.12", tmodel="cmd_tangential", settings="gwElliptic on")
+RUNS["gw_closed_rough"] = timed(SPHERES, model="gw_rough", cdf="1.12", tmodel="cmd_tangential",
+                                settings="gwElliptic on tangentialRoughness on")
 for t in ("springSliding", "diRenzo", "langston", "incremental", "coulomb"):
     RUNS["t_" + t] = packed(model="hertz_elliptic", tmodel="classical", settings="classicalTangential " + t)
 
@@ -111,6 +115,8 @@ ROWS = [
     ("tangential", "langston", None, "t_langston", "hertz", "reference"),
     ("tangential", "incremental: Mindlin K0", None, "t_incremental", "hertz", "reference"),
     ("tangential", "coulomb", None, "t_coulomb", "hertz", "reference"),
+    ("tangential", "cmd_tangential tangentialRoughness on", None, "gw_closed_rough", "hertz_112", None),
+    ("tangential", "cmd_tangential (smooth patch)", None, "gw_closed_cmd", "hertz_112", None),
 ]
 
 
