@@ -59,6 +59,7 @@
 #include "dc/rolling_kalker.h"
 #include "dc/root_find.h"
 #include "dc/rough_tangential.h"
+#include "dc/maugis_dugdale.h"
 #include "dc/scene.h"
 #include "dc/status.h"
 #include <float.h>
@@ -1101,6 +1102,82 @@ static void fuzz_rough_tangential(void)
     }
   }
   fz_done(f);
+}
+
+/* ---------------------------------------------------------------- */
+/* maugis_dugdale.h                                                   */
+
+static void fuzz_maugis_dugdale(void)
+{
+  fz_fn *ft = fz_new("dc_md_lambda_of_tabor");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double mu = A(U() < 0.7 ? fz_log(1e-4, 1e4) : fz_wild());
+    const double l = dc_md_lambda_of_tabor(mu);
+    ft->calls++;
+    FZ_EXPECT(ft, !isfinite(mu) || fabs(mu) > 0.8 * DBL_MAX || fabs(l - 1.157 * mu) <= 1e-3 * fabs(mu),
+              "not 1.1570 mu_T", "mu_T %.17g: %.17g", mu, l);
+  }
+  fz_done(ft);
+  fz_fn *f = fz_new("dc_md_state");
+  for (long k = 0; k < N_CALLS / 10; k++) {
+    fz_call();
+    const double lam = A(U() < 0.7 ? fz_log(1e-10, 1e10) : fz_wild());
+    const double ab = A(U() < 0.7 ? fz_log(1e-20, 1e20) : fz_wild());
+    const int bad = !ALLFIN(lam, ab);
+    double m, P, D;
+    SENTINEL(m);
+    SENTINEL(P);
+    SENTINEL(D);
+    const int st = dc_md_state(lam, ab, &m, &P, &D);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && ab >= 1e-20 && ab <= 1e20,
+             UNTOUCHED(m) && UNTOUCHED(P) && UNTOUCHED(D),
+             ALLFIN(m, P, D) && m >= 1.0, "lambda %.17g abar %.17g", lam, ab);
+    /* P <= abar^3 and D <= abar^2 (the zone pulls); P >= abar^3 - 2 - ... only near the limits */
+    FZ_EXPECT(f, st != DC_OK || (P <= ab * ab * ab * (1.0 + 1e-15) && D <= ab * ab * (1.0 + 1e-15)),
+              "the adhesive zone pushes", "lambda %.17g abar %.17g: P %.17g D %.17g", lam, ab, P, D);
+    FZ_EXPECT(f, st != DC_ENOCONV, "no convergence in the domain", "lambda %.17g abar %.17g", lam, ab);
+  }
+  fz_done(f);
+  f = fz_new("dc_md_state_zero");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double lam = A(U() < 0.7 ? fz_log(1e-10, 1e10) : fz_wild());
+    const int bad = !isfinite(lam);
+    double c, P, D;
+    SENTINEL(c);
+    SENTINEL(P);
+    SENTINEL(D);
+    const int st = dc_md_state_zero(lam, &c, &P, &D);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10, UNTOUCHED(c) && UNTOUCHED(P) && UNTOUCHED(D),
+             ALLFIN(c, P, D) && c >= 0.0 && P <= 0.0 && P >= -2.0 * (1.0 + 1e-15) && D <= 0.0,
+             "lambda %.17g", lam);
+  }
+  fz_done(f);
+  f = fz_new("dc_md_pulloff");
+  for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
+    fz_call();
+    const double lam = A(U() < 0.8 ? fz_log(1e-10, 1e10) : fz_wild());
+    const int bad = !isfinite(lam);
+    double P, a;
+    SENTINEL(P);
+    SENTINEL(a);
+    const int st = dc_md_pulloff(lam, &P, &a);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10, UNTOUCHED(P) && UNTOUCHED(a), ALLFIN(P, a),
+             "lambda %.17g", lam);
+    FZ_EXPECT(f, st != DC_OK || (P >= -2.0 - 1e-12 && P <= -1.5 + 1e-12),
+              "pull-off outside [-2, -3/2]", "lambda %.17g: %.17g", lam, P);
+  }
+  fz_done(f);
+  fz_fn *fd = fz_new("dc_dmt_pulloff");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double r1 = A(fz_wild()), r2 = A(fz_wild()), w = A(U() < 0.5 ? fz_log(1e-4, 1.0) : fz_wild());
+    const double F = dc_dmt_pulloff(r1, r2, w);
+    fd->calls++;
+    const int dom = ALLFIN(r1, r2, w) && r1 > 0.0 && r2 > 0.0 && w >= 0.0;
+    FZ_EXPECT(fd, dom ? F >= 0.0 && !isnan(F) : isnan(F), "NaN exactly outside the domain",
+              "R1 %.17g R2 %.17g w %.17g: %.17g", r1, r2, w, F);
+  }
+  fz_done(fd);
 }
 
 /* ---------------------------------------------------------------- */
@@ -4412,6 +4489,7 @@ int main(void)
   FZ_RUN(fuzz_gw_solver);
   FZ_RUN(fuzz_gw_solve);
   FZ_RUN(fuzz_rough_tangential);
+  FZ_RUN(fuzz_maugis_dugdale);
   FZ_RUN(fuzz_jkr_psi);
   FZ_RUN(fuzz_jkr_sphere);
   FZ_RUN(fuzz_jkr_geometry);

@@ -1,0 +1,79 @@
+/* Adhesion across the Tabor range, spheres: the Maugis-Dugdale model
+   (Maugis, J. Colloid Interface Sci. 150 (1992) 243; in the non-dimensional
+   form of Johnson & Greenwood, J. Colloid Interface Sci. 192 (1997) 326)
+   and its DMT limit (Derjaguin, Muller & Toporov 1975), the transition the
+   review names between JKR (soft, strongly adhesive, dc/jkr_sphere.h) and
+   DMT (hard, weakly adhesive: review Sec. 2.2, refs. [61], [67]).
+
+   The adhesive stress is sigma0 wherever the gap is below h0 = w/sigma0
+   (a Dugdale zone a < r < c around the contact radius a), zero beyond.
+   With K = 4 E* / 3 and the scales
+     a = abar (pi w R^2 / K)^1/3,  F = Pbar pi w R,  delta = Dbar (pi^2 w^2 R / K^2)^1/3,
+     lambda = 2 sigma0 (R / (pi w K^2))^1/3,  m = c/a,  s = (m^2 - 1)^1/2,
+   the contact edge carries no stress singularity and the zone ends where
+   the gap reaches h0:
+     (lambda abar^2/2) [s + (m^2 - 2) arcsec m] + (4 lambda^2 abar/3) [s arcsec m - m + 1] = 1   (MD1)
+     Pbar = abar^3 - lambda abar^2 [s + m^2 arcsec m]                                         (MD2)
+     Dbar = abar^2 - 4/3 lambda abar s                                                        (MD3)
+   (arcsec m = arctan s). lambda -> inf gives JKR (Pbar = abar^3 -
+   (6 abar^3)^1/2, pull-off 3/2 pi w R), lambda -> 0 DMT (Pbar = abar^3 -
+   2: Hertz less 2 pi w R, pull-off 2 pi w R); in between the pull-off
+   force under load control lies between them (Johnson & Greenwood's
+   adhesion map: JKR above lambda ~ 5, DMT below ~ 0.1). The Tabor
+   parameter mu_T = (R w^2/(E*^2 z0^3))^1/3 of a Lennard-Jones surface
+   potential with equilibrium separation z0 maps to lambda = 1.1570 mu_T
+   (sigma0 the potential's largest stress 16 w/(9 3^1/2 z0), h0 = 0.971 z0).
+
+   Numerics: MD1 is solved for s (its left side increases with s from -1
+   at s = 0), with the bracket s + (s^2 - 1) arctan s taken from its series
+   (4/3) s^3 - (8/15) s^5 + ... for s < 1/4 (JKR-like contacts, where s ~
+   1/lambda and the closed form cancels), and s arctan s - (1 + s^2)^1/2 + 1
+   as s arctan s - s^2/((1 + s^2)^1/2 + 1). Checked against an independent
+   mpmath solution of MD1-MD3 (tests/reference/gen_maugis.py). */
+#ifndef DC_MAUGIS_DUGDALE_H
+#define DC_MAUGIS_DUGDALE_H
+
+#include "dc/contract.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* lambda from the Tabor parameter (Lennard-Jones surfaces): 1.1570 mu_T,
+   exactly (32 / (9 3^1/2)) (9 / (16 pi))^1/3 mu_T. */
+double dc_md_lambda_of_tabor(double mu_T);
+
+/* The state on the contact branch at the non-dimensional contact radius
+   abar > 0 and lambda > 0: m = c/a (MD1), Pbar (MD2), Dbar (MD3).
+   The domain: lambda in [1e-10, 1e10], abar in [1e-20, 1e20] (DEM contacts
+   lie far inside); DC_EDOM outside, DC_ENOCONV if MD1 does not converge
+   (outputs untouched on error). */
+int dc_md_state(double lambda, double abar, double *m, double *Pbar, double *Dbar);
+
+/* The contact branch where the contact radius vanishes (abar -> 0, c > 0):
+   the zone's non-dimensional radius cbar = lim abar m, from MD1's limit
+   (pi lambda/4) cbar^2 + (4 lambda^2/3) (pi/2 - 1) cbar = 1, the force
+   Pbar0 = -(pi/2) lambda cbar^2 and the overlap Dbar0 = -(4/3) lambda cbar.
+   DC_EDOM unless lambda lies in [1e-10, 1e10]. */
+int dc_md_state_zero(double lambda, double *cbar, double *Pbar0, double *Dbar0);
+
+/* Pull-off force under load control: the least Pbar of the contact branch
+   over abar >= 0 (Pbarc in [-2, -3/2]), and the abar where it occurs (0 when
+   it is the abar -> 0 end): golden-section search around the least of 97
+   samples on [0, 3]. DC_EDOM unless lambda lies in [1e-10, 1e10]. */
+int dc_md_pulloff(double lambda, double *Pbarc, double *abarc);
+
+/* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
+   principal radii R_major, R_minor: the adhesive force of the rigid gap
+   x^2/(2 R_major) + y^2/(2 R_minor), whose area below the gap h is
+   2 pi h (R_major R_minor)^1/2, is 2 pi w (R_major R_minor)^1/2 (any stress
+   law of work w; the Derjaguin approximation), so
+     F = F_Hertz(delta) - 2 pi w (R_major R_minor)^1/2,   pull-off 2 pi w (R_major R_minor)^1/2
+   (spheres: 2 pi w R). Returns the pull-off force [N]; NaN outside the
+   domain (w >= 0, radii > 0, all finite). */
+double dc_dmt_pulloff(double R_major, double R_minor, double w);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

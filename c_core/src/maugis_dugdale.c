@@ -1,0 +1,131 @@
+/* Maugis-Dugdale adhesion of spheres and the DMT limit (dc/maugis_dugdale.h). */
+#include "dc/maugis_dugdale.h"
+#include "dc/root_find.h"
+#include "dc/status.h"
+#include <float.h>
+#include <math.h>
+
+double dc_md_lambda_of_tabor(double mu_T)
+{
+  return 32.0 / (9.0 * sqrt(3.0)) * cbrt(9.0 / (16.0 * M_PI)) * mu_T;
+}
+
+/* s + (s^2 - 1) arctan s (MD1's first bracket): the series
+   sum_j>=1 (-1)^(j-1) 4j/(4j^2 - 1) s^(2j+1) below s = 1/4 (16 terms:
+   the next is below 1e-19 of the first) */
+static double md_g1(double s)
+{
+  if (s >= 0.25) return s + (s * s - 1.0) * atan(s);
+  const double s2 = s * s;
+  double sum = 0.0;
+  for (int j = 16; j >= 1; j--) sum = (j & 1 ? 1.0 : -1.0) * 4.0 * j / (4.0 * j * j - 1.0) + s2 * sum;
+  return s * s2 * sum;
+}
+
+/* s arctan s - (1 + s^2)^1/2 + 1 (MD1's second bracket), without the cancellation */
+static double md_g2(double s) { return s * atan(s) - s * s / (sqrt(1.0 + s * s) + 1.0); }
+
+/* the domain: lambda in [1e-10, 1e10], abar in [1e-20, 1e20] */
+static int lambda_ok(double l) { return l >= 1e-10 && l <= 1e10; }
+static int abar_ok(double a) { return a >= 1e-20 && a <= 1e20; }
+
+typedef struct {
+  double c1, c2;   /* lambda abar^2 / 2, 4 lambda^2 abar / 3 */
+} md1_ctx;
+
+static double md1(double s, void *ctx, int slot)
+{
+  (void)slot;
+  const md1_ctx *c = (const md1_ctx *)ctx;
+  return c->c1 * md_g1(s) + c->c2 * md_g2(s) - 1.0;
+}
+
+int dc_md_state(double lambda, double abar, double *m, double *Pbar, double *Dbar)
+{
+  if (!lambda_ok(lambda) || !abar_ok(abar)) return DC_EDOM;
+  md1_ctx c = {0.5 * lambda * abar * abar, 4.0 / 3.0 * lambda * lambda * abar};
+  /* MD1 increases with s from -1 at s = 0: a bracket by doubling */
+  double hi = 1.0, fhi = md1(hi, &c, 1);
+  for (int k = 0; fhi <= 0.0; k++) {
+    if (k > 2100 || !isfinite(fhi)) return DC_ENOCONV;
+    hi *= 2.0;
+    fhi = md1(hi, &c, 1);
+  }
+  dc_root_result r;
+  if (dc_root_brent_ends(md1, &c, 0.0, hi, -1.0, fhi, 4.0 * DBL_EPSILON, 0.0, 400, &r) != DC_OK) return DC_ENOCONV;
+  const double s = r.x, m2 = 1.0 + s * s, t = atan(s);
+  *m = sqrt(m2);
+  *Pbar = abar * abar * (abar - lambda * (s + m2 * t));   /* MD2 */
+  *Dbar = abar * (abar - 4.0 / 3.0 * lambda * s);        /* MD3 */
+  return DC_OK;
+}
+
+int dc_md_state_zero(double lambda, double *cbar, double *Pbar0, double *Dbar0)
+{
+  if (!lambda_ok(lambda)) return DC_EDOM;
+  /* A c^2 + B c - 1 = 0, the positive root without cancellation */
+  const double A = M_PI / 4.0 * lambda, B = 4.0 / 3.0 * lambda * lambda * (M_PI / 2.0 - 1.0);
+  const double c = 2.0 / (B + sqrt(B * B + 4.0 * A));
+  *cbar = c;
+  *Pbar0 = -M_PI / 2.0 * lambda * c * c;
+  *Dbar0 = -4.0 / 3.0 * lambda * c;
+  return DC_OK;
+}
+
+/* Pbar on the contact branch at abar (abar = 0: the limit) */
+static double md_P(double lambda, double abar)
+{
+  double m, P, D;
+  if (abar < 1e-20) {
+    dc_md_state_zero(lambda, &m, &P, &D);
+    return P;
+  }
+  return dc_md_state(lambda, abar, &m, &P, &D) == DC_OK ? P : NAN;
+}
+
+int dc_md_pulloff(double lambda, double *Pbarc, double *abarc)
+{
+  if (!lambda_ok(lambda)) return DC_EDOM;
+  /* the least of 97 samples on [0, 3] (JKR's minimum lies at
+     abar = (3/2)^1/3 = 1.145, MD's below it), then golden section on the
+     bracket around it */
+  enum { NS = 96 };
+  const double top = 3.0;
+  int kmin = 0;
+  double pmin = md_P(lambda, 0.0);
+  for (int k = 1; k <= NS; k++) {
+    const double p = md_P(lambda, top * k / NS);
+    if (!isfinite(p)) return DC_ENOCONV;
+    if (p < pmin) { pmin = p; kmin = k; }
+  }
+  double lo = top * (kmin > 0 ? kmin - 1 : 0) / NS, hi = top * (kmin < NS ? kmin + 1 : NS) / NS;
+  const double g = 0.5 * (3.0 - sqrt(5.0));
+  double x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo), f1 = md_P(lambda, x1), f2 = md_P(lambda, x2);
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * (1.0 + hi); it++) {
+    if (f1 <= f2) {
+      hi = x2; x2 = x1; f2 = f1;
+      x1 = lo + g * (hi - lo);
+      f1 = md_P(lambda, x1);
+    } else {
+      lo = x1; x1 = x2; f1 = f2;
+      x2 = hi - g * (hi - lo);
+      f2 = md_P(lambda, x2);
+    }
+  }
+  double a = f1 <= f2 ? x1 : x2, p = f1 <= f2 ? f1 : f2;
+  if (kmin == 0) {   /* the minimum may be the abar -> 0 end */
+    const double p0 = md_P(lambda, 0.0);
+    if (p0 <= p) { p = p0; a = 0.0; }
+  }
+  if (!isfinite(p)) return DC_ENOCONV;
+  *Pbarc = p;
+  *abarc = a;
+  return DC_OK;
+}
+
+double dc_dmt_pulloff(double R_major, double R_minor, double w)
+{
+  if (!(R_major > 0.0 && R_minor > 0.0 && w >= 0.0 && isfinite(R_major) && isfinite(R_minor) && isfinite(w)))
+    return NAN;
+  return 2.0 * M_PI * w * sqrt(R_major) * sqrt(R_minor);
+}
