@@ -238,6 +238,35 @@ check(rc == 0 and abs(got["delta"] / sr - 1) < 1e-12 and abs(got["k0"] / k_want 
 rc, _, err = run(["cmd_tangential", "--sigma", "-1e-6"])
 check(rc == 2 and "--sigma" in err, "cmd_tangential --sigma -1e-6: exit 2 naming --sigma (%r)" % err.strip())
 
+# maugis: the pull-off force under load control against the mpmath solution
+# (maugis.csv) at lambda 1, in the deck's units (Pbar pi w R); lambda from
+# the Tabor parameter; the contact branch's rows against the table's states
+MREF = os.path.join(os.path.dirname(REF), "maugis.csv")
+mrows = [l.strip().split(",") for l in open(MREF) if not l.startswith("#")]
+Pc1 = next(float(r[2]) for r in mrows if r[0] == "pulloff" and r[1] == "1")
+rc, out, _ = run(["maugis", "--R", "1e-3", "--Estar", "1e9", "--w", "0.05", "--lambda", "1", "--summary", "1"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+check(rc == 0 and abs(got["Pbar_pulloff"] / Pc1 - 1) < 1e-8 and
+      abs(got["F_pulloff"] / (-Pc1 * math.pi * 0.05 * 1e-3) - 1) < 1e-12 and
+      abs(got["F_dmt"] / (2 * math.pi * 0.05 * 1e-3) - 1) < 1e-14 and abs(got["F_jkr"] / (1.5 * math.pi * 0.05 * 1e-3) - 1) < 1e-14,
+      "maugis lambda 1: pull-off %r (mpmath %r), force %r N between JKR %r and DMT %r"
+      % (got["Pbar_pulloff"], Pc1, got["F_pulloff"], got["F_jkr"], got["F_dmt"]))
+rc, out, _ = run(["maugis", "--R", "1e-6", "--Estar", "1e10", "--w", "0.05", "--z0", "3e-10", "--summary", "1"])
+head, rows = csv(out)
+got = dict(zip(head, rows[0]))
+muT = (1e-6 * 0.05 ** 2 / (1e10 ** 2 * 3e-10 ** 3)) ** (1.0 / 3.0)
+check(rc == 0 and abs(got["tabor"] / muT - 1) < 1e-14 and abs(got["lambda"] / muT - 1.1570) < 1e-4,
+      "maugis --z0: Tabor parameter %r (want %r), lambda / mu_T %r (want 1.1570)" % (got["tabor"], muT, got["lambda"] / muT))
+rc, out, _ = run(["maugis", "--lambda", "3", "--a_min", "0.2", "--a_max", "1.5", "--n", "3"])
+head, rows = csv(out)
+want = {float(r[2]): (float(r[4]), float(r[5])) for r in mrows if r[0] == "state" and r[1] == "3"}
+worst = max(max(abs(r[2] - want[r[0]][0]), abs(r[3] - want[r[0]][1])) for r in rows if r[0] in want)
+check(rc == 0 and len(rows) == 3 and worst < 1e-12, "maugis lambda 3: contact branch at abar 0.2 .. 1.5 against "
+      "the mpmath states within %.2g" % worst)
+rc, _, err = run(["maugis", "--lambda", "0"])
+check(rc == 2 and "--lambda" in err, "maugis --lambda 0: exit 2 naming --lambda (%r)" % err.strip())
+
 # kalker: the circle's coefficients against the generator's (kalker.csv,
 # a/b = 1, nu = 0.25); Kalker's linear force F_x = -G c^2 c11 xi (G =
 # E / (2 (1 + nu)), c^2 = a b) below saturation; the linear law bounded at
