@@ -129,3 +129,26 @@ double dc_dmt_pulloff(double R_major, double R_minor, double w)
     return NAN;
   return 2.0 * M_PI * w * sqrt(R_major) * sqrt(R_minor);
 }
+
+int dc_dmt_contact(const dc_hertz_geom *g, double Estar, double w, double delta, dc_contact *c)
+{
+  if (!(w >= 0.0 && isfinite(w) && isfinite(delta) && Estar > 0.0 && isfinite(Estar))) return DC_EDOM;
+  const double Fpo = dc_dmt_pulloff(g->R_major, g->R_minor, w);
+  if (!isfinite(Fpo)) return DC_ERANGE;
+  dc_contact o = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  if (delta > 0.0) {
+    dc_hertz_state h;
+    const int st = dc_hertz_contact(g, Estar, delta, &h);
+    if (st != DC_OK) return st;
+    o.F = h.F - Fpo;
+    o.kn = h.kn;
+    o.area = h.area;
+    o.a = h.a;
+    o.b = h.b;
+    o.F_bound = h.F + Fpo;
+    o.formed = 1;
+    if (!isfinite(o.F_bound)) return DC_ERANGE;
+  }
+  *c = o;
+  return DC_OK;
+}

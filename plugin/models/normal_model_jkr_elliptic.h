@@ -8,7 +8,12 @@
          neigh_modify contact_distance_factor F   (see below)
    Settings: those of every project normal model (dc_model_base.h) but
      limitForce (the adhesive force is tensile by design; 'limitForce on'
-     stops the run).
+     stops the run), and
+     adhesionLaw jkr|dmt   jkr (default): JKR, for soft, strongly adhesive
+                         contacts (large Tabor parameter); dmt: DMT, for hard,
+                         weakly adhesive ones (small Tabor parameter): the
+                         Hertz force less 2 pi w (R_major R_minor)^1/2 from
+                         touch on, no neck (dc/maugis_dugdale.h)
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
      viscoelasticTime), and workOfAdhesion peratomtypepair [J/m^2] >= 0
      (w = 2 x surface energy for like surfaces).
@@ -25,7 +30,8 @@
    K(e^2) of the current contact ellipse (2 E* a for a circle; dF/d delta
    itself is unbounded at separation); tangential stiffness 8 G* (a b)^1/2.
    Contact patch: the JKR ellipse, formed while the neck holds, the normal
-   force that bounds friction F + 2 |F_pull| (dc_jkr_friction_load).
+   force that bounds friction F + 2 |F_pull| (dc_jkr_friction_load); DMT:
+   the Hertz ellipse while delta > 0, friction load F + 2 F_pull.
    Superquadrics: the gap of a formed contact from superquadric_gap.h, the
    elliptic solve warm-started from the previous step (three history
    values). w = 0 is exactly `hertz_elliptic`. */
@@ -39,6 +45,7 @@ NORMAL_MODEL(JKR_ELLIPTIC,jkr_elliptic,@DC_MODEL_ID@)
 #include "dc_properties.h"
 #include "superquadric_gap.h"
 #include "dc/jkr_elliptic.h"
+#include "dc/maugis_dugdale.h"
 #include "dc/mindlin.h"
 
 namespace LIGGGHTS {
@@ -49,7 +56,8 @@ class NormalModel<JKR_ELLIPTIC> : public DcNormalModel
 {
 public:
   NormalModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
-    DcNormalModel(lmp, hsetup, c, "jkr_elliptic", NO_LIMIT_FORCE | NO_CURVATURE_REUSE), work(NULL), hint_offset(-1)
+    DcNormalModel(lmp, hsetup, c, "jkr_elliptic", NO_LIMIT_FORCE | NO_CURVATURE_REUSE), work(NULL), law(LAW_JKR),
+    hint_offset(-1)
   {
     /* the solver hint (fields 1-3) only where elliptic contacts occur */
     const int nfields = atom->superquadric_flag ? DC_JKR_HISTORY_NFIELDS : 1;
@@ -61,6 +69,14 @@ public:
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.addHistory(lmp, hsetup);
 #endif
+  }
+
+  void registerSettings(Settings &settings)
+  {
+    DcNormalModel::registerSettings(settings);
+    static const char *const names[] = {"jkr", "dmt"};
+    static const int values[] = {LAW_JKR, LAW_DMT};
+    settings.registerChoice("adhesionLaw", law, names, values, 2, "jkr");
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
@@ -93,7 +109,7 @@ public:
     double &formed = sidata.contact_history[contact_offset];
     const bool forming = !(formed > 0.0);   /* formed is 0 or 1: one test, where == 0 takes a NaN-aware three */
     formed = 1.0;
-    if (!forming && !superquadric(sidata) && !patchStored()) {
+    if (!forming && law == LAW_JKR && !superquadric(sidata) && !patchStored()) {
       /* spheres at the Hertz-like end, the patch not stored: the inline
          hot path of dc_jkr_sphere (the same bits) */
       const int itype = sidata.itype, jtype = sidata.jtype;
@@ -115,7 +131,7 @@ public:
   {
     double &formed = scdata.contact_history[contact_offset];
     const double w = work[scdata.itype][scdata.jtype];
-    if (formed == 0.0 || w == 0.0) return release(scdata);
+    if (formed == 0.0 || w == 0.0 || law == LAW_DMT) return release(scdata);
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
     double delta, vn;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
@@ -158,7 +174,18 @@ private:
     relativeRadii(sidata, R_major, R_minor, ax);
     dc_contact c;
     double P, Sn, kn, kt;
-    if (w == 0.0) {
+    if (law == LAW_DMT) {
+      dc_hertz_geom g;
+      const int st = dc_hertz_geometry(R_major, sq ? R_minor : R_major, &g);
+      if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, Y, st);
+      const int sc = dc_dmt_contact(&g, Y, w, delta, &c);
+      if (sc != DC_OK) fail("DMT contact", delta, R_major, R_minor, w, Y, sc);
+      if (!c.formed) return false;
+      P = c.F;
+      Sn = kn = c.kn;
+      kt = dc_mindlin_kt_circle(G, sqrt(g.R_area * delta));
+      checkHertzRange(sidata, c.a * c.a, R_minor);
+    } else if (w == 0.0) {
       double r_force = R_major, r_area = R_major;
       dc_hertz_geom g;
       if (sq) {
@@ -215,7 +242,9 @@ private:
   }
 
   static const char *whyReach() { return "adhesive contacts (work of adhesion %g J/m^2) are kept until separation"; }
+  enum { LAW_JKR = 0, LAW_DMT = 1 };
   double **work;
+  int law;   /* adhesionLaw */
   std::vector<dc_jkr_sphere_pair> spheres;   /* per type pair, for the sphere hot path */
   int contact_offset, hint_offset;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG

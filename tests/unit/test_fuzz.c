@@ -1178,6 +1178,25 @@ static void fuzz_maugis_dugdale(void)
               "R1 %.17g R2 %.17g w %.17g: %.17g", r1, r2, w, F);
   }
   fz_done(fd);
+  f = fz_new("dc_dmt_contact");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const dc_hertz_geom *g = &hpool[UI(nh)];
+    const double E = A(U() < 0.7 ? fz_log(1e5, 1e12) : fz_wild()), w = A(U() < 0.7 ? fz_log(1e-4, 1.0) : fz_wild());
+    const double d = A(U() < 0.7 ? g->R_minor * fz_sign(fz_log(1e-9, 1e-2)) : fz_wild());
+    const int bad = !ALLFIN(E, w, d);
+    dc_contact c;
+    SENTINEL(c);
+    const int st = dc_dmt_contact(g, E, w, d, &c);
+    FZ_CHECK(f, st, bad, !bad && E > 0.0 && w >= 0.0, UNTOUCHED(c),
+             ALLFIN(c.F, c.kn, c.area, c.a, c.b, c.F_bound) && (c.formed == (d > 0.0)) && c.F_bound >= 0.0,
+             "R_major %.17g R_minor %.17g E %.17g w %.17g delta %.17g", g->R_major, g->R_minor, E, w, d);
+    /* the force less the friction load is -2 F_po: F = F_bound - 2 F_po */
+    const double Fpo = dc_dmt_pulloff(g->R_major, g->R_minor, w);
+    FZ_EXPECT(f, st != DC_OK || !c.formed || fabs(c.F_bound - c.F - 2.0 * Fpo) <= 1e-12 * (c.F_bound + Fpo),
+              "friction load not F + 2 F_po", "delta %.17g w %.17g", d, w);
+  }
+  fz_done(f);
 }
 
 /* ---------------------------------------------------------------- */

@@ -77,6 +77,21 @@ int main(void)
   CHECK_REL(dc_dmt_pulloff(4e-3, 1e-3, 0.05), 2.0 * M_PI * 0.05 * 2e-3, 1e-15, "DMT, ellipse");
   CHECK(isnan(dc_dmt_pulloff(-1.0, 1.0, 0.05)) && isnan(dc_dmt_pulloff(1.0, 1.0, NAN)));
 
+  /* the DMT contact: Hertz less 2 pi w (R_major R_minor)^1/2 while delta > 0 */
+  {
+    dc_hertz_geom g;
+    dc_hertz_state hs;
+    dc_contact cd;
+    CHECK(dc_hertz_geometry(4e-3, 1e-3, &g) == DC_OK);
+    CHECK(dc_hertz_contact(&g, 2e9, 1e-6, &hs) == DC_OK);
+    CHECK(dc_dmt_contact(&g, 2e9, 0.05, 1e-6, &cd) == DC_OK && cd.formed == 1);
+    CHECK_REL(cd.F, hs.F - 2.0 * M_PI * 0.05 * 2e-3, 1e-15, "DMT force, ellipse");
+    CHECK_REL(cd.F_bound, hs.F + 2.0 * M_PI * 0.05 * 2e-3, 1e-15, "DMT friction load F + 2 F_po");
+    CHECK(cd.kn == hs.kn && cd.a == hs.a && cd.b == hs.b);
+    CHECK(dc_dmt_contact(&g, 2e9, 0.05, -1e-9, &cd) == DC_OK && cd.formed == 0 && cd.F == 0.0);
+    CHECK(dc_dmt_contact(&g, 2e9, -0.05, 1e-6, &cd) == DC_EDOM);
+  }
+
   /* domain */
   CHECK(dc_md_state(0.0, 1.0, &m, &P, &D) == DC_EDOM);
   CHECK(dc_md_state(1.0, 0.0, &m, &P, &D) == DC_EDOM);

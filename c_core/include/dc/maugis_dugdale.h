@@ -34,6 +34,7 @@
 #define DC_MAUGIS_DUGDALE_H
 
 #include "dc/contract.h"
+#include "dc/hertz_elliptic.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -72,6 +73,17 @@ int dc_md_pulloff(double lambda, double *Pbarc, double *abarc);
    (spheres: 2 pi w R). Returns the pull-off force [N]; NaN outside the
    domain (w >= 0, radii > 0, all finite). */
 double dc_dmt_pulloff(double R_major, double R_minor, double w);
+
+/* The DMT contact of geometry g (dc_hertz_geometry) at overlap delta:
+   delta > 0: F = F_Hertz - F_po (F_po = dc_dmt_pulloff of g's radii), the
+   Hertz stiffness, area and ellipse, friction load F + 2 F_po = F_Hertz +
+   F_po (as for JKR, dc_jkr_friction_load), formed; delta <= 0: no contact
+   (all zero, formed 0): the attraction's range before touch (of the order
+   of the equilibrium separation z0) lies below the overlaps a DEM step
+   resolves, and the force jumps by F_po at touch both ways (no hysteresis:
+   a DMT contact dissipates nothing). DC_EDOM for w < 0, Estar <= 0 or a
+   non-finite input; DC_ERANGE as dc_hertz_contact (c untouched on error). */
+int dc_dmt_contact(const dc_hertz_geom *g, double Estar, double w, double delta, dc_contact *c);
 
 #ifdef __cplusplus
 }
