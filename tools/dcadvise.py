@@ -614,15 +614,19 @@ def advise(deck, opts, out):
             po_w = m["pulloff_over_weight"]
             need = "elastic law"
             sticks = v < m["v_stick"]
+            dmt = tab < 0.1
             if po_w > tol or m["pulloff_over_F_max"] > tol or sticks:
-                need = "jkr_elliptic" if tab >= 5 else "jkr_elliptic (Tabor %s < 5: towards DMT, whose pull-off 2 pi w R is up to 4/3 of JKR's)" % fmt(tab)
+                need = ("jkr_elliptic adhesionLaw dmt" if dmt else "jkr_elliptic" if tab >= 5 else
+                        "jkr_elliptic (Tabor %s: between JKR and DMT; dclaw maugis gives the pull-off between "
+                        "JKR's 3/2 and DMT's 2 pi w R)" % fmt(tab))
             R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force; sticking speed %s m/s "
               "(impact %s of it: %s)" % (fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"]),
                                          fmt(m["v_stick"]), fmt(v / m["v_stick"]), "sticks" if sticks else "rebounds"),
               need,
               cost("jkr_elliptic") if need != "elastic law" else "1x",
-              "model jkr_elliptic; fix ... property/global workOfAdhesion peratomtypepair ..." if need != "elastic law" else "-")
-            if need != "elastic law":
+              "model jkr_elliptic%s; fix ... property/global workOfAdhesion peratomtypepair ..."
+              % (" adhesionLaw dmt" if dmt else "") if need != "elastic law" else "-")
+            if need != "elastic law" and not dmt:   # a DMT contact ends at touch: no neck to reach
                 cdf_need.append(1.0 + m["jkr_separation"] / reach_R)
         else:
             R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")

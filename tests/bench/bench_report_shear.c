@@ -108,6 +108,24 @@ static void run(const dc_classical_tangential *m, int law, double *F, double *ac
   }
 }
 
+/* The classical law's model with Mindlin's stiffness and no damping (zeros
+   for cmd_tangential's rows, law < 0). */
+static int law_model(int law, double Gstar, double Estar, dc_classical_tangential *m)
+{
+  memset(m, 0, sizeof *m);
+  if (law < 0) return DC_OK;
+  dc_classical_tangential_params p;
+  memset(&p, 0, sizeof p);
+  p.law = law;
+  p.stiffness = DC_CT_KT_MINDLIN;
+  p.damping = DC_CT_DAMP_NONE;
+  p.mu = MU;
+  p.Gstar = Gstar;
+  p.Estar = Estar;
+  dc_param_error err;
+  return dc_classical_tangential_init(&p, m, &err);
+}
+
 int main(void)
 {
   const double Estar = E_YOUNG / (2.0 * (1.0 - NU * NU)), G = E_YOUNG / (2.0 * (1.0 + NU));
@@ -134,19 +152,7 @@ int main(void)
   report_header();
   for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
     dc_classical_tangential m;
-    memset(&m, 0, sizeof m);
-    if (rows[k].law >= 0) {
-      dc_classical_tangential_params p;
-      memset(&p, 0, sizeof p);
-      p.law = rows[k].law;
-      p.stiffness = DC_CT_KT_MINDLIN;
-      p.damping = DC_CT_DAMP_NONE;
-      p.mu = MU;
-      p.Gstar = Gstar;
-      p.Estar = Estar;
-      dc_param_error err;
-      if (dc_classical_tangential_init(&p, &m, &err) != DC_OK) return 1;
-    }
+    if (law_model(rows[k].law, Gstar, Estar, &m) != DC_OK) return 1;
     run(&m, rows[k].law, F, &acc);
     report_err e = {0};
     for (int i = 0; i < nstep; i++) report_err_add(&e, (F[i] - Fref[i]) / (MU * Fn));
@@ -183,20 +189,8 @@ int main(void)
     };
     for (size_t k = 0; k < sizeof rrows / sizeof rrows[0]; k++) {
       dc_classical_tangential m;
-      memset(&m, 0, sizeof m);
       patch = k >= 2 ? smooth : rough;
-      if (rrows[k].law >= 0) {
-        dc_classical_tangential_params p;
-        memset(&p, 0, sizeof p);
-        p.law = rrows[k].law;
-        p.stiffness = DC_CT_KT_MINDLIN;
-        p.damping = DC_CT_DAMP_NONE;
-        p.mu = MU;
-        p.Gstar = Gstar;
-        p.Estar = Estar;
-        dc_param_error err;
-        if (dc_classical_tangential_init(&p, &m, &err) != DC_OK) return 1;
-      }
+      if (law_model(rrows[k].law, Gstar, Estar, &m) != DC_OK) return 1;
       run(&m, rrows[k].law, F, &acc);
       report_err e = {0};
       for (int i = 0; i < nstep; i++) report_err_add(&e, (F[i] - Fref[i]) / (MU * rs.F));

@@ -12,8 +12,9 @@ tangentialRoughness on over gw_rough gwElliptic on; inputs/rough_shear).
 - the smooth limit: sigma = 0 gives the smooth cmd_tangential run bit for
   bit, sigma = 1e-9 delta within 1e-12; before touch the smooth law has no
   patch (no tangential force);
-- three rough ellipsoids held and moved along their contact ellipse's
-  axes and at 45 degrees (in.rough_shear_superquadric): Mindlin's no-slip
+- three rough ellipsoids held on the wall and moved along their contact
+  ellipse's axes and at 45 degrees, and a pair of rough ellipsoid tips
+  moved across each other (in.rough_shear_superquadric): Mindlin's no-slip
   stiffnesses of the summits' ellipse (review Eqs. 56-59) with the contact's
   eccentricity, elliptic Hertz geometry evaluated here (regress.py).
 Usage: check_rough_shear.py WORKDIR"""
@@ -92,6 +93,7 @@ c.true(len(tiny) == len(off) and worst < 1e-12,
 
 # rough ellipsoids: the summits' elliptic patch
 a1, b1, c1 = 1.0e-3, 0.6e-3, 1.5e-3
+a2, b2, c2 = 1.5e-3, 0.6e-3, 1.0e-3   # the pair, a axis along x
 Rmaj, Rmin = a1 * a1 / c1, b1 * b1 / c1
 ds = 1e-6   # any overlap: the smooth contact's a^2/delta, b/a and R_force
 a_s, b_s, F_s = elliptic_contact(Rmaj, Rmin, Estar, ds)
@@ -111,6 +113,8 @@ for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
     d = os.path.join(work, "ellipsoids_%s" % d0)
     run("rough_shear/in.rough_shear_superquadric", d, variables={"sigma": sig, "d0": d0, "s": s}, tag="ellipsoids")
     for r in table(os.path.join(d, "shear.txt")):
+        if r[0] > 3:   # the pair, below
+            continue
         ang = math.radians(r[1])
         sx, sy = s * math.cos(ang), s * math.sin(ang)
         wx, wy = k_major * sx, k_minor * sy
@@ -122,4 +126,41 @@ for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
         err = math.hypot(r[5] - want[0], r[6] - want[1]) / Ft
         c.true(err < 1e-9, "%s: tangential force (%.6g, %.6g) N vs Mindlin on the summits' ellipse (%.6g, %.6g): "
                "%.3g (tol 1e-9)" % (tag, r[5], r[6], want[0], want[1], err))
+    # the pair of rough tips (atoms 4, 5; contact sigma 2^1/2 sigma): 5 moved along y by s, across the
+    # contact ellipse's minor axis (relative radii (b2^2/a2)/2 along y, (c2^2/a2)/2 along z). The
+    # contact point leaves the tips as 5 moves: the normal turns by about s/(2 b2^2/a2) (found here
+    # in the x-y plane, where the tips' ellipse section is a2, b2, and the force split along it);
+    # the overlap and the radii there move by O(s^2): a tolerance of 1e-3 (the smooth law's
+    # stiffness differs from the summits' by 1.1 % at this h, all of it before touch)
+    hp = {"5e-6": "-5/sqrt2", "-1e-6": "1/sqrt2"}[d0]
+    f12p, f32p = F[hp]
+    sc = math.sqrt(2) * sigma
+    Ry, Rz = 0.5 * b2 ** 2 / a2, 0.5 * c2 ** 2 / a2
+    ap, bp, Fp = elliptic_contact(Rz, Ry, Estar, ds)
+    gp = bp / ap
+    Kp, Ep = ellipke(1 - gp * gp)
+    Dp = (Kp - Ep) / (1 - gp * gp)
+    a_rp = math.sqrt(ap * ap / ds * sc) * f12p
+    Fnp = 4.0 / 3.0 * Estar * math.sqrt((0.75 * Fp / Estar) ** 2 / ds ** 3) * sc ** 1.5 * f32p
+    k_minor_p = 2 * math.pi * a_rp / (2 * (Kp - nu * Dp) / G)
+    Ftp = mu * Fnp * (1 - (1 - 2 * k_minor_p * s / (3 * mu * Fnp)) ** 1.5)
+    rows_p = {int(r[0]): r for r in table(os.path.join(d, "shear.txt")) if r[0] > 3}
+    r4, r5 = rows_p[4], rows_p[5]
+    Mx, My = 0.5 * (r5[2] - r4[2]), 0.5 * (r5[3] - r4[3])   # the midpoint from atom 4's centre
+    normal = lambda t: (math.cos(t) / a2, math.sin(t) / b2)
+    def off(t):   # (M - p) x n on atom 4's section: zero where the normal points at the midpoint
+        nx, ny = normal(t)
+        return (Mx - a2 * math.cos(t)) * ny - (My - b2 * math.sin(t)) * nx
+    lo, hi = -0.1, 0.1
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if (off(mid) > 0) == (off(lo) > 0) else (lo, mid)
+    nx, ny = normal(0.5 * (lo + hi))
+    nl = math.hypot(nx, ny)
+    nx, ny = nx / nl, ny / nl
+    fn5, ft5 = r5[5] * nx + r5[6] * ny, -r5[5] * ny + r5[6] * nx
+    c.true(abs(fn5 / Fnp - 1) < 1e-3, "ellipsoid pair, h %s: normal force %.6g N vs the GW closed form %.6g N "
+           "(normal turned by %.3g rad): %.2g (tol 1e-3)" % (hp, fn5, Fnp, math.atan2(ny, nx), abs(fn5 / Fnp - 1)))
+    c.true(abs(-ft5 / Ftp - 1) < 1e-3, "ellipsoid pair, h %s: tangential force %.6g N vs Mindlin on the summits' "
+           "ellipse (minor axis) %.6g N: %.2g (tol 1e-3)" % (hp, -ft5, Ftp, abs(-ft5 / Ftp - 1)))
 c.finish()
