@@ -631,6 +631,7 @@ def advise(deck, opts, out):
         else:
             R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
         # roughness
+        rough_needed = False
         if sigma > 0:
             ch = max(abs(m["rough_force_rest"]), abs(m["rough_force_max"]))
             need = "gw_rough" if ch > tol else "smooth law"
@@ -639,6 +640,7 @@ def advise(deck, opts, out):
                 fmt(m["rough_force_max"])), need, cost("gw_rough") if ch > tol else "1x",
               "model gw_rough; fix ... property/global surfaceRoughness peratomtype ..." if ch > tol else "-")
             if ch > tol:
+                rough_needed = True
                 cdf_need.append(1.0 + m["rough_reach"] / reach_R)
         else:
             R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
@@ -649,7 +651,9 @@ def advise(deck, opts, out):
             R("tangential memory", "tangential restitution of a 45-degree impact: %s with spring-sliding, %s with "
               "Cattaneo-Mindlin (slip distance %s m, one impact moves %s of them)" % (
                   fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
-              need, cost(need), "tangential cmd_tangential" if need == "cmd_tangential" else "tangential history")
+              need, cost(need), "tangential history" if need != "cmd_tangential" else
+              "tangential cmd_tangential tangentialRoughness on  (the summits' stiffness, with gw_rough)"
+              if rough_needed else "tangential cmd_tangential")
         else:
             R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
         # rolling: how far an impact's contact rolls, against Kalker's hand-over (rollingDistanceMin 2 semi-axes)

@@ -63,6 +63,12 @@ for k in ("delta_max", "e_plastic", "T_rayleigh", "delta_rest", "beta_cmd", "bet
           "scene_drop: %s %s as dclaw scene gives %s" % (k, wall.get(k), direct.get(k)))
 rc, out, err = advise([drop])
 check(rc == 0 and "not assessed" in out and "jamari_ep" not in out, "scene_drop without -var: plasticity not assessed")
+# rough and oblique: the tangential deck line takes the summits' stiffness; smooth: it does not
+rc, out, err = advise([drop, "-var", "sigma", "2e-5"])
+check(rc == 0 and "tangential cmd_tangential tangentialRoughness on" in out,
+      "rough scene needing memory: the deck line adds tangentialRoughness on")
+rc, out, err = advise([drop])
+check(rc == 0 and "tangentialRoughness" not in out, "smooth scene: no tangentialRoughness")
 
 
 def deck(text):
