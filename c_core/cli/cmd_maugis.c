@@ -1,9 +1,12 @@
 /* dclaw maugis: the Maugis-Dugdale contact branch of two spheres
    (dc/maugis_dugdale.h) over the contact radius, in the deck's units
    (contact radius a, force F, overlap delta) and Johnson-Greenwood's
-   (abar, Pbar, Dbar, m = c/a), or (--summary 1) the pull-off force under
-   load control beside the JKR and DMT limits. lambda from --lambda or from
-   the Tabor parameter of --z0 (Lennard-Jones equilibrium separation). */
+   (abar, Pbar, Dbar, m = c/a); (--overlap 1) the stable branch over the
+   overlap from the separation overlap to --D_max, as an overlap-controlled
+   DEM contact follows it; or (--summary 1) the pull-off force under load
+   control and the separation overlap beside the JKR and DMT limits.
+   lambda from --lambda or from the Tabor parameter of --z0 (Lennard-Jones
+   equilibrium separation). */
 #include "cli.h"
 #include "dc/maugis_dugdale.h"
 #include "dc/status.h"
@@ -21,10 +24,12 @@ static int cmd_maugis(int argc, char **argv)
     {"a_min", "first non-dimensional contact radius abar", 0.05, 0},
     {"a_max", "last abar", 3, 0},
     {"n", DC_CLI_N_HELP, 31, 0},
-    {"summary", "1: print lambda, the Tabor parameter and the pull-off force only", 0, 0},
+    {"overlap", "1: rows over the overlap Dbar from the separation overlap to --D_max (the stable branch)", 0, 0},
+    {"D_max", "last non-dimensional overlap Dbar, with --overlap 1", 4, 0},
+    {"summary", "1: print lambda, the Tabor parameter, the pull-off force and the separation overlap only", 0, 0},
     {0, 0, 0, 0}};
   int st = dc_cli_parse(argc, argv, o, "--R R --Estar E --w w [--lambda L | --z0 z] [--a_min a] [--a_max a] [--n N] "
-                        "[--summary 1]");
+                        "[--overlap 1 [--D_max D]] [--summary 1]");
   if (st) return st == 1 ? 0 : st;
   int n;
   if (dc_cli_count(argv[0], o, "n", &n)) return 2;
@@ -50,10 +55,34 @@ static int cmd_maugis(int argc, char **argv)
               lambda);
       return 2;
     }
-    const char *cols = "lambda,tabor,Pbar_pulloff,abar_pulloff,F_pulloff,F_jkr,F_dmt";
+    double Ds, as;
+    dc_md_separation(lambda, &Ds, &as);
+    const char *cols = "lambda,tabor,Pbar_pulloff,abar_pulloff,F_pulloff,F_jkr,F_dmt,Dbar_sep,delta_sep";
     printf("%s\n", cols);
-    const double v[] = {lambda, muT, Pc, ac, -Pc * sF, 1.5 * sF, dc_dmt_pulloff(R, R, w)};
-    return dc_cli_row("maugis", o, cols, 7, v);
+    const double v[] = {lambda, muT, Pc, ac, -Pc * sF, 1.5 * sF, dc_dmt_pulloff(R, R, w), Ds, Ds * sd};
+    return dc_cli_row("maugis", o, cols, 9, v);
+  }
+  if (dc_cli_get(o, "overlap") != 0.0) {
+    double Ds, as;
+    if ((st = dc_md_separation(lambda, &Ds, &as))) {
+      fprintf(stderr, "dclaw maugis: --lambda, --z0: %s (lambda %g must lie in [1e-10, 1e10])\n", dc_status_str(st),
+              lambda);
+      return 2;
+    }
+    const char *cols = "Dbar,abar,Pbar,delta,a,F";
+    printf("%s\n", cols);
+    for (int i = 0; i < n; i++) {
+      const double D = dc_cli_range(Ds, dc_cli_get(o, "D_max"), i, n);
+      double ab, m, P;
+      int contact;
+      if ((st = dc_md_at_overlap(lambda, D, &contact, &ab, &m, &P))) {
+        fprintf(stderr, "dclaw maugis: --D_max: %s at Dbar %g\n", dc_status_str(st), D);
+        return 2;
+      }
+      const double v[] = {D, ab, P, D * sd, ab * sa, P * sF};
+      if (dc_cli_row("maugis", o, cols, 6, v)) return 2;
+    }
+    return 0;
   }
   const char *cols = "abar,m,Pbar,Dbar,a,F,delta";
   printf("%s\n", cols);
@@ -73,4 +102,5 @@ static int cmd_maugis(int argc, char **argv)
 
 DC_CLI_COMMAND(maugis, cmd_maugis,
                "Maugis-Dugdale adhesion of spheres (JKR to DMT by lambda or the Tabor parameter): contact branch "
-               "over the contact radius; --summary 1: pull-off force beside JKR's and DMT's");
+               "over the contact radius or (--overlap 1) the overlap; --summary 1: pull-off force beside JKR's and "
+               "DMT's");

@@ -72,54 +72,115 @@ int dc_md_state_zero(double lambda, double *cbar, double *Pbar0, double *Dbar0)
   return DC_OK;
 }
 
-/* Pbar on the contact branch at abar (abar = 0: the limit) */
-static double md_P(double lambda, double abar)
+/* Pbar (which = 0) or Dbar (which = 1) on the contact branch at abar (abar
+   below the domain: the abar -> 0 end) */
+static double md_branch(double lambda, double abar, int which)
 {
   double m, P, D;
   if (abar < 1e-20) {
     dc_md_state_zero(lambda, &m, &P, &D);
-    return P;
+    return which ? D : P;
   }
-  return dc_md_state(lambda, abar, &m, &P, &D) == DC_OK ? P : NAN;
+  if (dc_md_state(lambda, abar, &m, &P, &D) != DC_OK) return NAN;
+  return which ? D : P;
+}
+
+/* The least Pbar or Dbar of the contact branch over abar >= 0 and where it
+   occurs (0: the abar -> 0 end): the least of 97 samples on [0, 3] (JKR's
+   extremes lie at abar = (3/2)^1/3 = 1.145 and 6^-1/3 = 0.55, MD's below
+   them), then golden section on the bracket around it. */
+static int md_branch_min(double lambda, int which, double *vmin, double *amin)
+{
+  enum { NS = 96 };
+  const double top = 3.0;
+  int kmin = 0;
+  double fmin = md_branch(lambda, 0.0, which);
+  for (int k = 1; k <= NS; k++) {
+    const double v = md_branch(lambda, top * k / NS, which);
+    if (!isfinite(v)) return DC_ENOCONV;
+    if (v < fmin) { fmin = v; kmin = k; }
+  }
+  double lo = top * (kmin > 0 ? kmin - 1 : 0) / NS, hi = top * (kmin < NS ? kmin + 1 : NS) / NS;
+  const double g = 0.5 * (3.0 - sqrt(5.0));
+  double x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo);
+  double f1 = md_branch(lambda, x1, which), f2 = md_branch(lambda, x2, which);
+  for (int it = 0; it < 200 && hi - lo > 1e-12 * (1.0 + hi); it++) {
+    if (f1 <= f2) {
+      hi = x2; x2 = x1; f2 = f1;
+      x1 = lo + g * (hi - lo);
+      f1 = md_branch(lambda, x1, which);
+    } else {
+      lo = x1; x1 = x2; f1 = f2;
+      x2 = hi - g * (hi - lo);
+      f2 = md_branch(lambda, x2, which);
+    }
+  }
+  double a = f1 <= f2 ? x1 : x2, v = f1 <= f2 ? f1 : f2;
+  if (kmin == 0) {   /* the least may be the abar -> 0 end */
+    const double v0 = md_branch(lambda, 0.0, which);
+    if (v0 <= v) { v = v0; a = 0.0; }
+  }
+  if (!isfinite(v)) return DC_ENOCONV;
+  *vmin = v;
+  *amin = a;
+  return DC_OK;
 }
 
 int dc_md_pulloff(double lambda, double *Pbarc, double *abarc)
 {
   if (!lambda_ok(lambda)) return DC_EDOM;
-  /* the least of 97 samples on [0, 3] (JKR's minimum lies at
-     abar = (3/2)^1/3 = 1.145, MD's below it), then golden section on the
-     bracket around it */
-  enum { NS = 96 };
-  const double top = 3.0;
-  int kmin = 0;
-  double pmin = md_P(lambda, 0.0);
-  for (int k = 1; k <= NS; k++) {
-    const double p = md_P(lambda, top * k / NS);
-    if (!isfinite(p)) return DC_ENOCONV;
-    if (p < pmin) { pmin = p; kmin = k; }
+  return md_branch_min(lambda, 0, Pbarc, abarc);
+}
+
+int dc_md_separation(double lambda, double *Dbar_sep, double *abar_sep)
+{
+  if (!lambda_ok(lambda)) return DC_EDOM;
+  return md_branch_min(lambda, 1, Dbar_sep, abar_sep);
+}
+
+typedef struct {
+  double lambda, D;
+} md_overlap_ctx;
+
+static double md_overlap(double abar, void *ctx, int slot)
+{
+  (void)slot;
+  const md_overlap_ctx *c = (const md_overlap_ctx *)ctx;
+  return md_branch(c->lambda, abar, 1) - c->D;
+}
+
+int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, double *m, double *Pbar)
+{
+  if (!lambda_ok(lambda) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
+  double Ds, as;
+  int st = dc_md_separation(lambda, &Ds, &as);
+  if (st != DC_OK) return st;
+  if (Dbar < Ds) {
+    *contact = 0;
+    *abar = *m = *Pbar = 0.0;
+    return DC_OK;
   }
-  double lo = top * (kmin > 0 ? kmin - 1 : 0) / NS, hi = top * (kmin < NS ? kmin + 1 : NS) / NS;
-  const double g = 0.5 * (3.0 - sqrt(5.0));
-  double x1 = lo + g * (hi - lo), x2 = hi - g * (hi - lo), f1 = md_P(lambda, x1), f2 = md_P(lambda, x2);
-  for (int it = 0; it < 200 && hi - lo > 1e-12 * (1.0 + hi); it++) {
-    if (f1 <= f2) {
-      hi = x2; x2 = x1; f2 = f1;
-      x1 = lo + g * (hi - lo);
-      f1 = md_P(lambda, x1);
-    } else {
-      lo = x1; x1 = x2; f1 = f2;
-      x2 = hi - g * (hi - lo);
-      f2 = md_P(lambda, x2);
-    }
+  /* Dbar(abar) increases from Dbar_sep at abar_sep: a bracket by doubling, then Brent */
+  md_overlap_ctx c = {lambda, Dbar};
+  const double lo = as > 1e-20 ? as : 1e-20;
+  double flo = md_overlap(lo, &c, 0), hi = fmax(2.0 * lo, 1.0), fhi = md_overlap(hi, &c, 1);
+  for (int k = 0; fhi < 0.0; k++) {
+    if (k > 200 || !isfinite(fhi)) return DC_ENOCONV;
+    hi *= 2.0;
+    fhi = md_overlap(hi, &c, 1);
   }
-  double a = f1 <= f2 ? x1 : x2, p = f1 <= f2 ? f1 : f2;
-  if (kmin == 0) {   /* the minimum may be the abar -> 0 end */
-    const double p0 = md_P(lambda, 0.0);
-    if (p0 <= p) { p = p0; a = 0.0; }
+  if (flo > 0.0) flo = 0.0;   /* rounding at the separation point itself */
+  dc_root_result r;
+  if (dc_root_brent_ends(md_overlap, &c, lo, hi, flo, fhi, 4.0 * DBL_EPSILON, 0.0, 400, &r) != DC_OK) return DC_ENOCONV;
+  double D;
+  if (r.x <= 1e-20) {
+    dc_md_state_zero(lambda, m, Pbar, &D);   /* the abar -> 0 end: m holds cbar there */
+    *m = HUGE_VAL;
+  } else if ((st = dc_md_state(lambda, r.x, m, Pbar, &D)) != DC_OK) {
+    return st;
   }
-  if (!isfinite(p)) return DC_ENOCONV;
-  *Pbarc = p;
-  *abarc = a;
+  *contact = 1;
+  *abar = r.x;
   return DC_OK;
 }
 

@@ -264,6 +264,14 @@ want = {float(r[2]): (float(r[4]), float(r[5])) for r in mrows if r[0] == "state
 worst = max(max(abs(r[2] - want[r[0]][0]), abs(r[3] - want[r[0]][1])) for r in rows if r[0] in want)
 check(rc == 0 and len(rows) == 3 and worst < 1e-12, "maugis lambda 3: contact branch at abar 0.2 .. 1.5 against "
       "the mpmath states within %.2g" % worst)
+rc, out, _ = run(["maugis", "--lambda", "1", "--overlap", "1", "--D_max", "4", "--n", "5"])
+head, rows = csv(out)
+Dsep = next(float(r[2]) for r in mrows if r[0] == "separation" and r[1] == "1")
+P4 = next(float(r[4]) for r in mrows if r[0] == "overlap" and r[1] == "1" and r[2] == "4")
+check(rc == 0 and len(rows) == 5 and abs(rows[0][0] / Dsep - 1) < 1e-8 and abs(rows[-1][0] - 4) < 1e-12 and
+      abs(rows[-1][2] / P4 - 1) < 1e-9 and all(b[1] > a[1] for a, b in zip(rows, rows[1:])),
+      "maugis lambda 1 --overlap 1: from the separation overlap %r (mpmath %r) to Dbar 4, force %r (mpmath %r), "
+      "the contact radius growing" % (rows[0][0], Dsep, rows[-1][2], P4))
 rc, _, err = run(["maugis", "--lambda", "0"])
 check(rc == 2 and "--lambda" in err, "maugis --lambda 0: exit 2 naming --lambda (%r)" % err.strip())
 

@@ -16,6 +16,9 @@ of DMT's -2.
 Writes maugis.csv beside this script: rows
   state,lambda,a,m,P,D      the contact branch at a
   pulloff,lambda,P_c,a_c    a_c = 0: the a -> 0 end
+  separation,lambda,D_s,a_s the least D over a >= 0 (the same search)
+  overlap,lambda,D,a,P      the stable branch (a >= a_s) at overlap D: its root
+                            by bisection and findroot
 Run: python3 gen_maugis.py"""
 import os
 import mpmath as mp
@@ -48,11 +51,38 @@ def end(lam):
     return -mp.pi / 2 * lam * c * c
 
 
+def end_D(lam):
+    A, B = mp.pi * lam / 4, 4 * lam * lam / 3 * (mp.pi / 2 - 1)
+    c = (-B + mp.sqrt(B * B + 4 * A)) / (2 * A)
+    return -4 * lam * c / 3
+
+
+def separation(lam):
+    """The least D over a >= 0 (the same search as pulloff's)."""
+    return least(lambda a: state(lam, a)[2] if a > 0 else end_D(lam))
+
+
+def at_overlap(lam, D, a_sep):
+    """a >= a_sep with D(a) = D (bisection to a bracket, then findroot)."""
+    f = lambda a: state(lam, a)[2] - D
+    lo, hi = max(a_sep, mp.mpf("1e-30")), mp.mpf(1)
+    while f(hi) < 0:
+        lo, hi = hi, 2 * hi
+    for _ in range(80):
+        mid = (lo + hi) / 2
+        lo, hi = (mid, hi) if f(mid) < 0 else (lo, mid)
+    a = mp.findroot(f, (lo, hi), solver="anderson")
+    return a, state(lam, a)[1]
+
+
 def pulloff(lam):
-    """The least P over a >= 0: the least of the a -> 0 end and 96 samples
+    return least(lambda a: state(lam, a)[1] if a > 0 else end(lam))
+
+
+def least(P):
+    """The least of P over a >= 0: the least of the a -> 0 end and 96 samples
     on (0, 3], then a golden-section search on the samples' bracket to
     1e-25 in a, then the root of dP/da there (a smooth interior minimum)."""
-    P = lambda a: state(lam, a)[1] if a > 0 else end(lam)
     grid = [mp.mpf(k) / 32 for k in range(0, 97)]
     vals = [P(a) for a in grid]
     k = min(range(len(vals)), key=lambda i: vals[i])
@@ -73,7 +103,7 @@ def pulloff(lam):
     if a > mp.mpf("1e-20"):
         a = mp.findroot(lambda x: mp.diff(P, x), a)
     best = (P(a), a)
-    return best if best[0] < end(lam) else (end(lam), mp.mpf(0))
+    return best if best[0] < P(mp.mpf(0)) else (P(mp.mpf(0)), mp.mpf(0))
 
 
 if __name__ == "__main__":
@@ -89,4 +119,11 @@ if __name__ == "__main__":
                 out.write("state,%s,%s,%s,%s,%s\n" % (lam, a, mp.nstr(m, 20), mp.nstr(P, 20), mp.nstr(D, 20)))
             Pc, ac = pulloff(L)
             out.write("pulloff,%s,%s,%s\n" % (lam, mp.nstr(Pc, 20), mp.nstr(ac, 20)))
+            Ds, as_ = separation(L)
+            out.write("separation,%s,%s,%s\n" % (lam, mp.nstr(Ds, 20), mp.nstr(as_, 20)))
+            for D in ("0", "1", "4"):
+                a, P = at_overlap(L, mp.mpf(D), as_)
+                out.write("overlap,%s,%s,%s,%s\n" % (lam, D, mp.nstr(a, 20), mp.nstr(P, 20)))
+            a, P = at_overlap(L, Ds / 2, as_)   # between the separation and touch
+            out.write("overlap,%s,%s,%s,%s\n" % (lam, mp.nstr(Ds / 2, 20), mp.nstr(a, 20), mp.nstr(P, 20)))
             print(lam, mp.nstr(Pc, 12), mp.nstr(ac, 8))

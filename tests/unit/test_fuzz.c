@@ -1168,6 +1168,43 @@ static void fuzz_maugis_dugdale(void)
               "pull-off outside [-2, -3/2]", "lambda %.17g: %.17g", lam, P);
   }
   fz_done(f);
+  f = fz_new("dc_md_separation");
+  for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
+    fz_call();
+    const double lam = A(U() < 0.8 ? fz_log(1e-10, 1e10) : fz_wild());
+    const int bad = !isfinite(lam);
+    double D, a;
+    SENTINEL(D);
+    SENTINEL(a);
+    const int st = dc_md_separation(lam, &D, &a);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10, UNTOUCHED(D) && UNTOUCHED(a), ALLFIN(D, a) && D < 0.0,
+             "lambda %.17g", lam);
+  }
+  fz_done(f);
+  f = fz_new("dc_md_at_overlap");
+  for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
+    fz_call();
+    const double lam = A(U() < 0.8 ? fz_log(1e-6, 1e6) : fz_wild()), D = A(U() < 0.8 ? -3.0 + 10.0 * U() : fz_wild());
+    const int bad = !ALLFIN(lam, D);
+    double a, m, P;
+    int contact;
+    SENTINEL(a);
+    SENTINEL(m);
+    SENTINEL(P);
+    SENTINEL(contact);
+    const int st = dc_md_at_overlap(lam, D, &contact, &a, &m, &P);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && fabs(D) <= 1e30,
+             UNTOUCHED(a) && UNTOUCHED(m) && UNTOUCHED(P) && UNTOUCHED(contact),
+             (contact == 0 || contact == 1) && ALLFIN(a, P) && !isnan(m) && a >= 0.0,
+             "lambda %.17g Dbar %.17g", lam, D);
+    /* on the branch the overlap is the one asked for */
+    if (st == DC_OK && contact && a > 1e-20) {
+      double m2, P2, D2;
+      FZ_EXPECT(f, dc_md_state(lam, a, &m2, &P2, &D2) == DC_OK && fabs(D2 - D) <= 1e-12 * (1.0 + fabs(D)),
+                "not at the overlap asked for", "lambda %.17g Dbar %.17g: abar %.17g", lam, D, a);
+    }
+  }
+  fz_done(f);
   fz_fn *fd = fz_new("dc_dmt_pulloff");
   for (long k = 0; k < N_CALLS; k++) {
     const double r1 = A(fz_wild()), r2 = A(fz_wild()), w = A(U() < 0.5 ? fz_log(1e-4, 1.0) : fz_wild());

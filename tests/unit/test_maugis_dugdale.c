@@ -14,8 +14,8 @@ int main(void)
 {
   FILE *f = check_open_reference("maugis.csv");
   char tag[32];
-  double v[5], worst_s = 0.0, worst_p = 0.0;
-  int ns = 0, np = 0;
+  double v[5], worst_s = 0.0, worst_p = 0.0, worst_d = 0.0, worst_o = 0.0;
+  int ns = 0, np = 0, nd = 0, no = 0;
   while (f && check_read_tagged_row(f, tag, sizeof tag, v, 5) > 0) {
     if (!strcmp(tag, "state")) {
       double m, P, D;
@@ -28,14 +28,40 @@ int main(void)
       worst_p = fmax(worst_p, fabs(P / v[1] - 1));
       CHECK_ABS(a, v[2], 1e-4, "abar at pull-off");
       np++;
+    } else if (!strcmp(tag, "separation")) {
+      double D, a;
+      CHECK(dc_md_separation(v[0], &D, &a) == DC_OK);
+      worst_d = fmax(worst_d, fabs(D / v[1] - 1));
+      CHECK_ABS(a, v[2], 1e-4, "abar at separation");
+      nd++;
+    } else if (!strcmp(tag, "overlap")) {
+      double a, m, P;
+      int contact;
+      CHECK(dc_md_at_overlap(v[0], v[1], &contact, &a, &m, &P) == DC_OK && contact == 1);
+      worst_o = fmax(worst_o, fmax(fabs(a / v[2] - 1), fabs(P - v[3]) / fmax(1.0, fabs(v[3]))));
+      no++;
     }
   }
   if (f) fclose(f);
   printf("Maugis-Dugdale against the mpmath solution: %d states (m, P, D) worst %.3g, %d pull-off forces worst %.3g\n",
          ns, worst_s, np, worst_p);
-  CHECK(ns == 84 && np == 14);
+  printf("  %d separation overlaps worst %.3g, %d stable-branch states at given overlaps worst %.3g\n", nd, worst_d, no,
+         worst_o);
+  CHECK(ns == 84 && np == 14 && nd == 14 && no == 56);
   CHECK(worst_s < 1e-10);
   CHECK(worst_p < 1e-8);
+  CHECK(worst_d < 1e-8);
+  CHECK(worst_o < 1e-8);
+  /* below the separation overlap: no contact; JKR's separation (lambda 1e4): -3 6^-2/3 at 6^-1/3 */
+  {
+    double D, a, m, P;
+    int contact;
+    CHECK(dc_md_separation(2.0, &D, &a) == DC_OK);
+    CHECK(dc_md_at_overlap(2.0, D - 1e-9, &contact, &a, &m, &P) == DC_OK && contact == 0 && P == 0.0);
+    CHECK(dc_md_separation(1e4, &D, &a) == DC_OK);
+    CHECK_REL(D, -3.0 * pow(6.0, -2.0 / 3.0), 1e-3, "lambda 1e4: JKR's separation overlap");
+    CHECK_REL(a, pow(6.0, -1.0 / 3.0), 2e-3, "lambda 1e4: JKR's contact radius at separation");
+  }
 
   /* limits: JKR (lambda -> inf: the approach goes as 1/lambda), DMT (lambda -> 0) */
   double P, a, m, D;

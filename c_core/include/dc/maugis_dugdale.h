@@ -64,6 +64,22 @@ int dc_md_state_zero(double lambda, double *cbar, double *Pbar0, double *Dbar0);
    samples on [0, 3]. DC_EDOM unless lambda lies in [1e-10, 1e10]. */
 int dc_md_pulloff(double lambda, double *Pbarc, double *abarc);
 
+/* The contact branch's lowest overlap, where an overlap-controlled contact
+   separates: the least Dbar over abar >= 0 (MD3) and the abar where it
+   occurs (0: the abar -> 0 end, where the branch meets the separated
+   states of a Dugdale zone alone). JKR: Dbar = -3 6^-2/3 at abar = 6^-1/3;
+   the search as dc_md_pulloff's. DC_EDOM unless lambda lies in [1e-10, 1e10]. */
+int dc_md_separation(double lambda, double *Dbar_sep, double *abar_sep);
+
+/* The state on the stable contact branch (abar >= abar_sep, where Dbar
+   grows with abar) at the overlap Dbar: *contact = 1 with abar, m and Pbar,
+   or *contact = 0 and zeros below the separation overlap. At the abar -> 0
+   end m is reported as +inf. DC_EDOM unless lambda lies in [1e-10, 1e10]
+   and |Dbar| <= 1e30; DC_ENOCONV if a solve fails (outputs untouched on
+   error). The reference evaluation: a root in abar of MD3 with MD1 solved
+   at each trial, about 2 us a call; not the DEM hot path. */
+int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, double *m, double *Pbar);
+
 /* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
    principal radii R_major, R_minor: the adhesive force of the rigid gap
    x^2/(2 R_major) + y^2/(2 R_minor), whose area below the gap h is
