@@ -77,6 +77,9 @@ configs=(
   "sh5|$sph|hertz|10000|1|-var cdf 1.09"
   "se2|$sph|hertz_elliptic|10000|1|-var cdf 1.02"
   "sj0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9"
+  # DMT (jkr_elliptic adhesionLaw dmt), at w = 0.05 J/m^2 and on the Hertz trajectory
+  "sjd|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var tkey adhesionLaw -var tval dmt"
+  "sjd0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9 -var tkey adhesionLaw -var tval dmt"
   "sh1|$sph|hertz|10000|1|-var cdf 1.0001"
   "sr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12"
   # plasticity: hardness 1e5 Pa yields at 1e-3 r, so settling contacts go plastic
@@ -220,6 +223,9 @@ row(lambda spa, spe: "    polydisperse (d 2.6-3.4 mm, contact distance 1.14): wi
 row(lambda sh1, sr0: "    sigma = 1e-12 m (same trajectory as Hertz), contact distance 1.0001: stock hertz %.3f s, "
     "gw_rough %.3f s = %.4f x" % (sh1, sr0, sr0 / sh1), "sh1", "sr0")
 row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x hertz_elliptic" % (sj, sj / se), "sj", "se")
+row(lambda sjd, sj: "    adhesionLaw dmt: %.3f s = %.4f x jkr_elliptic (JKR)" % (sjd, sjd / sj), "sjd", "sj")
+row(lambda sjd0, sj0: "    adhesionLaw dmt, w = 1e-9 (the Hertz trajectory): %.3f s = %.4f x jkr_elliptic (JKR)" % (sjd0, sjd0 / sj0),
+    "sjd0", "sj0")
 row(lambda se2, sj0: "    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
     "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2), "se2", "sj0")
 row(lambda sjp, sh: "2888 spheres: jamari_ep (hardness 1e5 Pa: plastic) %.3f s = %.4f x stock hertz" % (sjp, sjp / sh), "sjp", "sh")
