@@ -123,6 +123,18 @@ public:
         return;
       }
     }
+    if (law == LAW_DMT && !superquadric(sidata) && !patchStored()) {
+      /* DMT spheres, the patch not stored: the inline path of dc_dmt_contact (the same bits) */
+      const int itype = sidata.itype, jtype = sidata.jtype;
+      const double R = sphereEffectiveRadius(sidata), delta = sidata.deltan;
+      double P, kn, root;
+      if (dc_dmt_sphere(R, Yeff[itype][jtype], work[itype][jtype], delta, &P, &kn, &root)) {
+        checkHertzRange(sidata, root * root, R);
+        applyForce(sidata, P, delta, sidata.vn, kn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root), i_forces,
+                   j_forces);
+        return;
+      }
+    }
     if (!jkrForce(sidata, sidata.deltan, sidata.vn, forming, i_forces, j_forces)) publishNone(sidata);
   }
 
@@ -176,8 +188,12 @@ private:
     double P, Sn, kn, kt;
     if (law == LAW_DMT) {
       dc_hertz_geom g;
-      const int st = dc_hertz_geometry(R_major, sq ? R_minor : R_major, &g);
-      if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, Y, st);
+      if (sq) {
+        const int st = dc_hertz_geometry(R_major, R_minor, &g);
+        if (st != DC_OK) fail("contact geometry", delta, R_major, R_minor, w, Y, st);
+      } else {
+        dc_hertz_geometry_circle(R_major, &g);   /* the same bits, without the polynomials */
+      }
       const int sc = dc_dmt_contact(&g, Y, w, delta, &c);
       if (sc != DC_OK) fail("DMT contact", delta, R_major, R_minor, w, Y, sc);
       if (!c.formed) return false;

@@ -1205,6 +1205,24 @@ static void fuzz_maugis_dugdale(void)
     }
   }
   fz_done(f);
+  fz_fn *fs = fz_new("dc_dmt_sphere");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double R = A(U() < 0.8 ? fz_log(1e-7, 1.0) : fz_pos()), E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos());
+    const double w = A(U() < 0.8 ? fz_log(1e-4, 1.0) : fz_pos() * (U() < 0.1 ? 0.0 : 1.0));
+    const double d = A(U() < 0.8 ? R * fz_sign(fz_log(1e-12, 1e-1)) : fz_wide());
+    double F, kn, root;
+    const int ok = dc_dmt_sphere(R, E, w, d, &F, &kn, &root);
+    fs->calls++;
+    dc_hertz_geom g;
+    dc_contact c;
+    dc_hertz_geometry_circle(R, &g);
+    const int st = dc_dmt_contact(&g, E, w, d, &c);
+    /* where both answer, dc_dmt_contact's force and stiffness to the bit (no answer is
+       allowed: the caller takes dc_dmt_contact; the unit test has it answer typical contacts) */
+    FZ_EXPECT(fs, !ok || (d > 0.0 && (st != DC_OK || (c.formed && F == c.F && kn == c.kn))),
+              "not dc_dmt_contact's bits", "R %.17g E %.17g w %.17g delta %.17g", R, E, w, d);
+  }
+  fz_done(fs);
   fz_fn *fd = fz_new("dc_dmt_pulloff");
   for (long k = 0; k < N_CALLS; k++) {
     const double r1 = A(fz_wild()), r2 = A(fz_wild()), w = A(U() < 0.5 ? fz_log(1e-4, 1.0) : fz_wild());

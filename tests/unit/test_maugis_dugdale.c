@@ -116,6 +116,19 @@ int main(void)
     CHECK(cd.kn == hs.kn && cd.a == hs.a && cd.b == hs.b);
     CHECK(dc_dmt_contact(&g, 2e9, 0.05, -1e-9, &cd) == DC_OK && cd.formed == 0 && cd.F == 0.0);
     CHECK(dc_dmt_contact(&g, 2e9, -0.05, 1e-6, &cd) == DC_EDOM);
+    /* the sphere hot path: dc_dmt_contact's F and kn to the bit over random spheres */
+    unsigned long long x = 123456789ull;
+    int same = 1, n = 0;
+    for (int k = 0; k < 100000; k++) {
+      const double R = pow(10.0, -6.0 + 6.0 * check_uniform(&x)), E = pow(10.0, 5.0 + 7.0 * check_uniform(&x));
+      const double w = pow(10.0, -4.0 + 4.0 * check_uniform(&x)), d = R * pow(10.0, -9.0 + 8.0 * check_uniform(&x));
+      double F, kn, root;
+      dc_hertz_geometry_circle(R, &g);
+      if (dc_dmt_contact(&g, E, w, d, &cd) != DC_OK || !dc_dmt_sphere(R, E, w, d, &F, &kn, &root)) continue;
+      same &= F == cd.F && kn == cd.kn && root == sqrt(g.R_area * d);
+      n++;
+    }
+    CHECK(n == 100000 && same);
   }
 
   /* domain */

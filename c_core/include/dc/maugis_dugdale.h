@@ -33,6 +33,8 @@
 #ifndef DC_MAUGIS_DUGDALE_H
 #define DC_MAUGIS_DUGDALE_H
 
+#include <float.h>
+#include <math.h>
 #include "dc/contract.h"
 #include "dc/hertz_elliptic.h"
 
@@ -101,6 +103,22 @@ double dc_dmt_pulloff(double R_major, double R_minor, double w);
    a DMT contact dissipates nothing). DC_EDOM for w < 0, Estar <= 0 or a
    non-finite input; DC_ERANGE as dc_hertz_contact (c untouched on error). */
 int dc_dmt_contact(const dc_hertz_geom *g, double Estar, double w, double delta, dc_contact *c);
+
+/* The sphere hot path of dc_dmt_contact (geometry dc_hertz_geometry_circle
+   of R, inputs in its domain): where that returns DC_OK, its F and kn to
+   the bit, and the Hertz root (R delta)^1/2; 0 and nothing written where
+   delta <= 0 or a product is not finite (call dc_dmt_contact). */
+static inline int dc_dmt_sphere(double R, double Estar, double w, double delta, double *F, double *kn, double *root)
+{
+  if (!(delta > 0.0)) return 0;
+  const double r = sqrt(R * delta);
+  const double f = 4.0 / 3.0 * Estar * r * delta - 2.0 * M_PI * w * sqrt(R) * sqrt(R), k = 2.0 * Estar * r;
+  if (!(fabs(f) <= DBL_MAX && k <= DBL_MAX)) return 0;
+  *F = f;
+  *kn = k;
+  *root = r;
+  return 1;
+}
 
 #ifdef __cplusplus
 }
