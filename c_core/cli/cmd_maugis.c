@@ -48,27 +48,22 @@ static int cmd_maugis(int argc, char **argv)
   const double K = 4.0 / 3.0 * Es, sa = cbrt(M_PI * w * R * R / K), sF = M_PI * w * R;
   const double sd = cbrt(M_PI * M_PI * w * w * R / (K * K));
   if (!isfinite(muT)) muT = lambda / dc_md_lambda_of_tabor(1.0);
+  /* the separation overlap (the --overlap rows start there); its status is lambda's domain */
+  double Ds, as;
+  if ((st = dc_md_separation(lambda, &Ds, &as))) {
+    fprintf(stderr, "dclaw maugis: --lambda, --z0: %s (lambda %g must lie in [1e-10, 1e10])\n", dc_status_str(st),
+            lambda);
+    return 2;
+  }
   if (dc_cli_get(o, "summary") != 0.0) {
     double Pc, ac;
-    if ((st = dc_md_pulloff(lambda, &Pc, &ac))) {
-      fprintf(stderr, "dclaw maugis: --lambda, --z0: %s (lambda %g must lie in [1e-10, 1e10])\n", dc_status_str(st),
-              lambda);
-      return 2;
-    }
-    double Ds, as;
-    dc_md_separation(lambda, &Ds, &as);
+    dc_md_pulloff(lambda, &Pc, &ac);
     const char *cols = "lambda,tabor,Pbar_pulloff,abar_pulloff,F_pulloff,F_jkr,F_dmt,Dbar_sep,delta_sep";
     printf("%s\n", cols);
     const double v[] = {lambda, muT, Pc, ac, -Pc * sF, 1.5 * sF, dc_dmt_pulloff(R, R, w), Ds, Ds * sd};
     return dc_cli_row("maugis", o, cols, 9, v);
   }
   if (dc_cli_get(o, "overlap") != 0.0) {
-    double Ds, as;
-    if ((st = dc_md_separation(lambda, &Ds, &as))) {
-      fprintf(stderr, "dclaw maugis: --lambda, --z0: %s (lambda %g must lie in [1e-10, 1e10])\n", dc_status_str(st),
-              lambda);
-      return 2;
-    }
     const char *cols = "Dbar,abar,Pbar,delta,a,F";
     printf("%s\n", cols);
     for (int i = 0; i < n; i++) {
