@@ -184,6 +184,64 @@ int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, dou
   return DC_OK;
 }
 
+/* MD1's brackets' derivatives: g1' = 2 s arctan s + 2 s^2/(1 + s^2), g2' = arctan s + s/(1 + s^2) - s/(1 + s^2)^1/2 */
+static double md_dg1(double s) { return 2.0 * s * atan(s) + 2.0 * s * s / (1.0 + s * s); }
+static double md_dg2(double s) { return atan(s) + s / (1.0 + s * s) - s / sqrt(1.0 + s * s); }
+
+int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar)
+{
+  if (!lambda_ok(lambda) || !abar_ok(abar0) || !(s0 >= 0.0 && s0 <= 1e300) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
+  const double l2 = lambda * lambda;
+  double a = abar0, x = s0;
+  /* residuals of MD1 and MD3 and the larger of their scaled sizes */
+  double r1, r2, norm;
+#define MD_RES(a_, x_, r1_, r2_, n_)                                                                       \
+  do {                                                                                                     \
+    const double t1 = 0.5 * lambda * (a_) * (a_) * md_g1(x_), t2 = 4.0 / 3.0 * l2 * (a_) * md_g2(x_);      \
+    const double u1 = (a_) * (a_), u2 = 4.0 / 3.0 * lambda * (a_) * (x_);                                \
+    r1_ = t1 + t2 - 1.0;                                                                                   \
+    r2_ = u1 - u2 - Dbar;                                                                                  \
+    n_ = fmax(fabs(r1_) / (1.0 + fabs(t1) + fabs(t2)), fabs(r2_) / (fabs(u1) + fabs(u2) + fabs(Dbar) + 1e-300)); \
+  } while (0)
+  MD_RES(a, x, r1, r2, norm);
+  for (int it = 0; it < 40; it++) {
+    if (norm <= 4.0 * DBL_EPSILON) {
+      const double m2 = 1.0 + x * x, P = a * a * (a - lambda * (x + m2 * atan(x)));   /* MD2 */
+      if (!abar_ok(a) || !isfinite(P)) return DC_ENOCONV;
+      *abar = a;
+      *s = x;
+      *Pbar = P;
+      return DC_OK;
+    }
+    /* J (da, dx) = -(r1, r2) */
+    const double j11 = lambda * a * md_g1(x) + 4.0 / 3.0 * l2 * md_g2(x);
+    const double j12 = 0.5 * lambda * a * a * md_dg1(x) + 4.0 / 3.0 * l2 * a * md_dg2(x);
+    const double j21 = 2.0 * a - 4.0 / 3.0 * lambda * x, j22 = -4.0 / 3.0 * lambda * a;
+    const double det = j11 * j22 - j12 * j21;
+    if (!(fabs(det) > 0.0) || !isfinite(det)) return DC_ENOCONV;
+    const double da = (-r1 * j22 + r2 * j12) / det, dx = (-r2 * j11 + r1 * j21) / det;
+    double step = 1.0, an, xn, r1n, r2n, nn;
+    for (int h = 0;; h++) {
+      if (h > 30) return DC_ENOCONV;
+      an = a + step * da;
+      xn = x + step * dx;
+      /* a trust region: abar within a factor 4, s within 4 s + 1 */
+      if (an > 0.25 * a && an < 4.0 * a && xn >= 0.0 && xn <= 4.0 * x + 1.0) {
+        MD_RES(an, xn, r1n, r2n, nn);
+        if (nn < norm || nn <= 4.0 * DBL_EPSILON) break;
+      }
+      step *= 0.5;
+    }
+    a = an;
+    x = xn;
+    r1 = r1n;
+    r2 = r2n;
+    norm = nn;
+  }
+#undef MD_RES
+  return DC_ENOCONV;
+}
+
 double dc_dmt_pulloff(double R_major, double R_minor, double w)
 {
   if (!(R_major > 0.0 && R_minor > 0.0 && w >= 0.0 && isfinite(R_major) && isfinite(R_minor) && isfinite(w)))

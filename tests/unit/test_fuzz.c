@@ -1205,6 +1205,29 @@ static void fuzz_maugis_dugdale(void)
     }
   }
   fz_done(f);
+  f = fz_new("dc_md_at_overlap_near");
+  for (long k = 0; k < N_CALLS / 10; k++) {
+    fz_call();
+    const double lam = A(U() < 0.8 ? fz_log(1e-4, 1e4) : fz_wild()), D = A(U() < 0.8 ? -1.0 + 6.0 * U() : fz_wild());
+    const double a0 = A(U() < 0.8 ? fz_log(1e-3, 10.0) : fz_wild()), s0 = A(U() < 0.8 ? fz_log(1e-4, 1e3) : fz_wild());
+    const int bad = !ALLFIN(lam, D, a0, s0);
+    double a, x, P;
+    SENTINEL(a);
+    SENTINEL(x);
+    SENTINEL(P);
+    const int st = dc_md_at_overlap_near(lam, D, a0, s0, &a, &x, &P);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && a0 >= 1e-20 && a0 <= 1e20 && s0 >= 0.0 && s0 <= 1e300 &&
+             fabs(D) <= 1e30, UNTOUCHED(a) && UNTOUCHED(x) && UNTOUCHED(P), ALLFIN(a, x, P) && a > 0.0 && x >= 0.0,
+             "lambda %.17g Dbar %.17g abar0 %.17g s0 %.17g", lam, D, a0, s0);
+    /* a state of the branch (MD1) at the overlap asked for (MD3) */
+    if (st == DC_OK && a >= 1e-20 && a <= 1e20) {
+      double m2, P2, D2;
+      FZ_EXPECT(f, dc_md_state(lam, a, &m2, &P2, &D2) == DC_OK && fabs(D2 - D) <= 1e-9 * (1.0 + fabs(D)) &&
+                   fabs(P2 - P) <= 1e-9 * (1.0 + fabs(P)),
+                "not the branch's state at that overlap", "lambda %.17g Dbar %.17g abar0 %.17g s0 %.17g", lam, D, a0, s0);
+    }
+  }
+  fz_done(f);
   fz_fn *fs = fz_new("dc_dmt_sphere");
   for (long k = 0; k < N_CALLS; k++) {
     const double R = A(U() < 0.8 ? fz_log(1e-7, 1.0) : fz_pos()), E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos());

@@ -77,6 +77,37 @@ int main(void)
   CHECK(dc_md_state(1e-10, 1.5, &m, &P, &D) == DC_OK);
   CHECK_REL(P, 1.5 * 1.5 * 1.5 - 2.0, 1e-4, "lambda 1e-10: DMT force a^3 - 2 (Hertz less 2 pi w R)");
   CHECK_REL(D, 2.25, 1e-4, "lambda 1e-10: DMT overlap a^2 (Hertz)");
+  /* Newton from a nearby state (a DEM contact's previous step) against the reference
+     evaluation along an unloading path from Dbar 4 to 1 % of the separation overlap above it
+     (at the fold itself Newton may stop: DC_ENOCONV), 2000 steps, for lambda 0.1, 1, 10 */
+  {
+    double worst_n = 0.0;
+    int fails = 0, n = 0;
+    const double lams[] = {0.1, 1.0, 10.0};
+    for (int L = 0; L < 3; L++) {
+      double Ds, as, a, s, P, m, ar, Pr;
+      int contact;
+      CHECK(dc_md_separation(lams[L], &Ds, &as) == DC_OK);
+      CHECK(dc_md_at_overlap(lams[L], 4.0, &contact, &a, &m, &P) == DC_OK);
+      s = sqrt(m * m - 1.0);
+      for (int k = 1; k <= 2000; k++) {
+        const double D = 4.0 + (Ds - 0.01 * Ds - 4.0) * k / 2000.0;
+        if (dc_md_at_overlap_near(lams[L], D, a, s, &a, &s, &P) != DC_OK) { fails++; break; }
+        if (k % 97 == 0 || k == 2000) {
+          CHECK(dc_md_at_overlap(lams[L], D, &contact, &ar, &m, &Pr) == DC_OK && contact == 1);
+          worst_n = fmax(worst_n, fmax(fabs(a / ar - 1), fabs(P - Pr) / fmax(1.0, fabs(Pr))));
+          n++;
+        }
+      }
+    }
+    printf("  Newton from the previous step along unloading paths: %d compared, worst %.3g, %d failures\n", n, worst_n,
+           fails);
+    CHECK(fails == 0 && n == 63);
+    CHECK(worst_n < 1e-12);
+    double a, s, P;
+    CHECK(dc_md_at_overlap_near(1.0, 1.0, 0.0, 1.0, &a, &s, &P) == DC_EDOM);
+    CHECK(dc_md_at_overlap_near(1.0, NAN, 1.0, 1.0, &a, &s, &P) == DC_EDOM);
+  }
   /* the pull-off force is monotonic in lambda between the limits */
   double prev = -2.0;
   int mono = 1;

@@ -83,6 +83,19 @@ int dc_md_separation(double lambda, double *Dbar_sep, double *abar_sep);
    DEM hot path. */
 int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, double *m, double *Pbar);
 
+/* The same state from a nearby one (a DEM contact's previous step): Newton
+   on MD1 and MD3 together in (abar, s), s = (m^2 - 1)^1/2, from the guess
+   (abar0, s0) with abar0 > 0, s0 >= 0, steps halved while they leave
+   a trust region (abar within a factor 4, s within 4 s + 1, s >= 0) or do
+   not reduce the residual; stops when both
+   residuals are below 4 DBL_EPSILON of their terms. *abar, *s, *Pbar on
+   DC_OK (the stable branch if the guess lies on it and Dbar is above the
+   separation overlap: the caller checks Dbar >= Dbar_sep); DC_ENOCONV
+   after 40 iterations, as near the separation overlap, where the branch
+   folds (outputs untouched: take dc_md_at_overlap); DC_EDOM
+   outside lambda's and abar's domain or for a guess outside it. */
+int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar);
+
 /* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
    principal radii R_major, R_minor: the adhesive force of the rigid gap
    x^2/(2 R_major) + y^2/(2 R_minor), whose area below the gap h is
