@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, ellipke, elliptic_contact, run, start, table
+from regress import ROOT, elliptic_contact, mindlin_ellipse, run, start, table
 
 work, _, c = start()
 E, nu, mu, R = 5e6, 0.3, 0.5, 1e-3
@@ -94,22 +94,24 @@ c.true(len(tiny) == len(off) and worst < 1e-12,
 # rough ellipsoids: the summits' elliptic patch
 a1, b1, c1 = 1.0e-3, 0.6e-3, 1.5e-3
 a2, b2, c2 = 1.5e-3, 0.6e-3, 1.0e-3   # the pair, a axis along x
-Rmaj, Rmin = a1 * a1 / c1, b1 * b1 / c1
-ds = 1e-6   # any overlap: the smooth contact's a^2/delta, b/a and R_force
-a_s, b_s, F_s = elliptic_contact(Rmaj, Rmin, Estar, ds)
-R_asp, ratio = a_s * a_s / ds, b_s / a_s
-R_force = (0.75 * F_s / Estar) ** 2 / ds ** 3
-m = 1 - ratio * ratio
-K, Ee = ellipke(m)
-D = (K - Ee) / m
+
+
+def summits(R1, R2, sigma, f12, f32):
+    """The summits' semi-axis a_r = (R_asp sigma)^1/2 F_1/2 (R_asp = a^2/delta
+    of the smooth contact), the axis ratio b/a and the GW closed-form force
+    4/3 E* R_force^1/2 sigma^3/2 F_3/2 of relative radii R1, R2, from elliptic
+    Hertz at an overlap of 1 um (any overlap gives the same three)."""
+    ds = 1e-6
+    a_s, b_s, F_s = elliptic_contact(R1, R2, Estar, ds)
+    a_r = math.sqrt(a_s * a_s / ds * sigma) * f12
+    return a_r, b_s / a_s, 4.0 / 3.0 * Estar * math.sqrt((0.75 * F_s / Estar) ** 2 / ds ** 3) * sigma ** 1.5 * f32
+
+
 s = 2e-7
 for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
     sigma = float(sig)
-    f12, f32 = F[h]
-    a_r = math.sqrt(R_asp * sigma) * f12
-    Fn = 4.0 / 3.0 * Estar * math.sqrt(R_force) * sigma ** 1.5 * f32
-    k_major = 2 * math.pi * a_r / (2 * ((1 - nu) * K + nu * D) / G)
-    k_minor = 2 * math.pi * a_r / (2 * (K - nu * D) / G)
+    a_r, ratio, Fn = summits(a1 * a1 / c1, b1 * b1 / c1, sigma, *F[h])
+    k_major, k_minor = mindlin_ellipse(a_r, ratio, nu, G)
     d = os.path.join(work, "ellipsoids_%s" % d0)
     run("rough_shear/in.rough_shear_superquadric", d, variables={"sigma": sig, "d0": d0, "s": s}, tag="ellipsoids")
     for r in table(os.path.join(d, "shear.txt")):
@@ -133,16 +135,8 @@ for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
     # the overlap and the radii there move by O(s^2): a tolerance of 1e-3 (the smooth law's
     # stiffness differs from the summits' by 1.1 % at this h, all of it before touch)
     hp = {"5e-6": "-5/sqrt2", "-1e-6": "1/sqrt2"}[d0]
-    f12p, f32p = F[hp]
-    sc = math.sqrt(2) * sigma
-    Ry, Rz = 0.5 * b2 ** 2 / a2, 0.5 * c2 ** 2 / a2
-    ap, bp, Fp = elliptic_contact(Rz, Ry, Estar, ds)
-    gp = bp / ap
-    Kp, Ep = ellipke(1 - gp * gp)
-    Dp = (Kp - Ep) / (1 - gp * gp)
-    a_rp = math.sqrt(ap * ap / ds * sc) * f12p
-    Fnp = 4.0 / 3.0 * Estar * math.sqrt((0.75 * Fp / Estar) ** 2 / ds ** 3) * sc ** 1.5 * f32p
-    k_minor_p = 2 * math.pi * a_rp / (2 * (Kp - nu * Dp) / G)
+    a_rp, gp, Fnp = summits(0.5 * c2 ** 2 / a2, 0.5 * b2 ** 2 / a2, math.sqrt(2) * sigma, *F[hp])
+    k_minor_p = mindlin_ellipse(a_rp, gp, nu, G)[1]
     Ftp = mu * Fnp * (1 - (1 - 2 * k_minor_p * s / (3 * mu * Fnp)) ** 1.5)
     rows_p = {int(r[0]): r for r in table(os.path.join(d, "shear.txt")) if r[0] > 3}
     r4, r5 = rows_p[4], rows_p[5]

@@ -210,6 +210,17 @@ def elliptic_contact(R1, R2, Estar, delta):
     return a, a * math.sqrt(1.0 - m), 4.0 / 3.0 * Estar * math.sqrt(Rc * delta) * delta * gamma
 
 
+def mindlin_ellipse(a, g, nu, G):
+    """Mindlin's no-slip stiffnesses (k_major, k_minor) of a contact ellipse
+    of semi-major axis a and axis ratio g = b/a between two like bodies
+    (review Eqs. 56-57: compliance 2 [(1 - nu) K + nu D] / G along the major
+    axis, 2 [K - nu D] / G along the minor, K and D of e^2 = 1 - g^2)."""
+    m = 1.0 - g * g
+    K, E = ellipke(m)
+    D = (K - E) / m
+    return 2 * math.pi * a / (2 * ((1 - nu) * K + nu * D) / G), 2 * math.pi * a / (2 * (K - nu * D) / G)
+
+
 def relative_radii(k1I, k2I, k1II, k2II, w):
     """Relative principal radii from the principal curvatures of two bodies
     whose principal directions make the angle w (review Eqs. 3-4)."""
