@@ -188,22 +188,23 @@ int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, dou
 static double md_dg1(double s) { return 2.0 * s * atan(s) + 2.0 * s * s / (1.0 + s * s); }
 static double md_dg2(double s) { return atan(s) + s / (1.0 + s * s) - s / sqrt(1.0 + s * s); }
 
+/* MD1's and MD3's residuals at (abar, s) for the overlap D, and the larger
+   of them scaled by the sizes of their terms */
+static double md_residuals(double lambda, double D, double a, double x, double *r1, double *r2)
+{
+  const double l2 = lambda * lambda, t1 = 0.5 * lambda * a * a * md_g1(x), t2 = 4.0 / 3.0 * l2 * a * md_g2(x);
+  const double u1 = a * a, u2 = 4.0 / 3.0 * lambda * a * x;
+  *r1 = t1 + t2 - 1.0;
+  *r2 = u1 - u2 - D;
+  return fmax(fabs(*r1) / (1.0 + fabs(t1) + fabs(t2)), fabs(*r2) / (fabs(u1) + fabs(u2) + fabs(D) + 1e-300));
+}
+
 int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar)
 {
   if (!lambda_ok(lambda) || !abar_ok(abar0) || !(s0 >= 0.0 && s0 <= 1e300) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
   const double l2 = lambda * lambda;
-  double a = abar0, x = s0;
-  /* residuals of MD1 and MD3 and the larger of their scaled sizes */
-  double r1, r2, norm;
-#define MD_RES(a_, x_, r1_, r2_, n_)                                                                       \
-  do {                                                                                                     \
-    const double t1 = 0.5 * lambda * (a_) * (a_) * md_g1(x_), t2 = 4.0 / 3.0 * l2 * (a_) * md_g2(x_);      \
-    const double u1 = (a_) * (a_), u2 = 4.0 / 3.0 * lambda * (a_) * (x_);                                \
-    r1_ = t1 + t2 - 1.0;                                                                                   \
-    r2_ = u1 - u2 - Dbar;                                                                                  \
-    n_ = fmax(fabs(r1_) / (1.0 + fabs(t1) + fabs(t2)), fabs(r2_) / (fabs(u1) + fabs(u2) + fabs(Dbar) + 1e-300)); \
-  } while (0)
-  MD_RES(a, x, r1, r2, norm);
+  double a = abar0, x = s0, r1, r2;
+  double norm = md_residuals(lambda, Dbar, a, x, &r1, &r2);
   for (int it = 0; it < 40; it++) {
     if (norm <= 4.0 * DBL_EPSILON) {
       const double m2 = 1.0 + x * x, P = a * a * (a - lambda * (x + m2 * atan(x)));   /* MD2 */
@@ -220,14 +221,14 @@ int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, d
     const double det = j11 * j22 - j12 * j21;
     if (!(fabs(det) > 0.0) || !isfinite(det)) return DC_ENOCONV;
     const double da = (-r1 * j22 + r2 * j12) / det, dx = (-r2 * j11 + r1 * j21) / det;
-    double step = 1.0, an, xn, r1n, r2n, nn;
+    /* halved steps: a trust region (abar within a factor 4, s within 4 s + 1) and a falling residual */
+    double step = 1.0, an, xn, r1n = 0.0, r2n = 0.0, nn = HUGE_VAL;
     for (int h = 0;; h++) {
       if (h > 30) return DC_ENOCONV;
       an = a + step * da;
       xn = x + step * dx;
-      /* a trust region: abar within a factor 4, s within 4 s + 1 */
       if (an > 0.25 * a && an < 4.0 * a && xn >= 0.0 && xn <= 4.0 * x + 1.0) {
-        MD_RES(an, xn, r1n, r2n, nn);
+        nn = md_residuals(lambda, Dbar, an, xn, &r1n, &r2n);
         if (nn < norm || nn <= 4.0 * DBL_EPSILON) break;
       }
       step *= 0.5;
@@ -238,7 +239,6 @@ int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, d
     r2 = r2n;
     norm = nn;
   }
-#undef MD_RES
   return DC_ENOCONV;
 }
 
