@@ -19,6 +19,13 @@ inline MatrixProperty *dcCreateWorkOfAdhesion(PropertyRegistry &registry, const 
   return MODEL_PARAMS::createPerTypePairProperty(registry, "workOfAdhesion", caller, sanity_checks, 0.0);
 }
 
+/* equilibriumSeparation peratomtypepair [m] > 0: z0 of the surfaces'
+   Lennard-Jones potential (adhesionLaw maugis and tabor) */
+inline MatrixProperty *dcCreateEquilibriumSeparation(PropertyRegistry &registry, const char *caller, bool sanity_checks)
+{
+  return MODEL_PARAMS::createPerTypePairProperty(registry, "equilibriumSeparation", caller, sanity_checks, 0.0);
+}
+
 /* surfaceRoughness peratomtype [m] >= 0, registered as surfaceRoughnessType */
 inline VectorProperty *dcCreateRoughnessType(PropertyRegistry &registry, const char *caller, bool sanity_checks)
 {

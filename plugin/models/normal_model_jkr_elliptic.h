@@ -9,14 +9,22 @@
    Settings: those of every project normal model (dc_model_base.h) but
      limitForce (the adhesive force is tensile by design; 'limitForce on'
      stops the run), and
-     adhesionLaw jkr|dmt   jkr (default): JKR, for soft, strongly adhesive
+     adhesionLaw jkr|dmt|maugis|tabor
+                         jkr (default): JKR, for soft, strongly adhesive
                          contacts (large Tabor parameter); dmt: DMT, for hard,
                          weakly adhesive ones (small Tabor parameter): the
                          Hertz force less 2 pi w (R_major R_minor)^1/2 from
-                         touch on, no neck (dc/maugis_dugdale.h)
+                         touch on, no neck; maugis: Maugis-Dugdale, the
+                         transition between them (spheres; its zone acts
+                         before touch and holds until the model's separation
+                         overlap); tabor: per contact the law its Tabor
+                         parameter picks (JKR above 5, DMT below 0.1,
+                         Maugis-Dugdale between; spheres) (dc/maugis_dugdale.h)
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
      viscoelasticTime), and workOfAdhesion peratomtypepair [J/m^2] >= 0
-     (w = 2 x surface energy for like surfaces).
+     (w = 2 x surface energy for like surfaces); maugis and tabor also
+     equilibriumSeparation peratomtypepair [m] > 0 (z0 of the surfaces'
+     Lennard-Jones potential, about 3e-10 to 4e-10).
    A contact forms when the surfaces touch (delta = 0) and is kept, with
    tensile force, on the stable branch of the JKR curve until the overlap
    falls below delta_break (spheres: -3/4 (pi^2 w^2 R / E*^2)^1/3;
@@ -31,7 +39,9 @@
    itself is unbounded at separation); tangential stiffness 8 G* (a b)^1/2.
    Contact patch: the JKR ellipse, formed while the neck holds, the normal
    force that bounds friction F + 2 |F_pull| (dc_jkr_friction_load); DMT:
-   the Hertz ellipse while delta > 0, friction load F + 2 F_pull.
+   the Hertz ellipse while delta > 0, friction load F + 2 F_pull;
+   Maugis-Dugdale: the contact circle, F + 2 |F_pull| with its pull-off
+   force under load control, no friction while only the zone acts.
    Superquadrics: the gap of a formed contact from superquadric_gap.h, the
    elliptic solve warm-started from the previous step (three history
    values). w = 0 is exactly `hertz_elliptic`. */
@@ -74,14 +84,23 @@ public:
   void registerSettings(Settings &settings)
   {
     DcNormalModel::registerSettings(settings);
-    static const char *const names[] = {"jkr", "dmt"};
-    static const int values[] = {LAW_JKR, LAW_DMT};
-    settings.registerChoice("adhesionLaw", law, names, values, 2, "jkr");
+    static const char *const names[] = {"jkr", "dmt", "maugis", "tabor"};
+    static const int values[] = {LAW_JKR, LAW_DMT, LAW_MD, LAW_TABOR};
+    settings.registerChoice("adhesionLaw", law, names, values, 4, "jkr");
   }
 
   void postSettings(IContactHistorySetup *hsetup, ContactModelBase *c)
   {
     DcNormalModel::postSettings(hsetup, c);
+    if (law >= LAW_MD) {
+      if (atom->superquadric_flag)
+        stop(true, "adhesionLaw maugis and tabor are for spheres; superquadrics take adhesionLaw jkr or dmt");
+      for (int k = 0; k < DC_MD_CONTACT_NFIELDS; k++) {
+        const int off = hsetup->add_history_value(dc_md_history[k].name, dc_md_history[k].flips ? "1" : "0");
+        if (k == 0) md_offset = off;
+        else if (off != md_offset + k) stop(true, "the Maugis-Dugdale history fields are not contiguous");
+      }
+    }
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     gap.setup(lmp, c);
 #endif
@@ -101,15 +120,28 @@ public:
         if (dc_jkr_check(work[i][j], &err) != DC_OK) stopParam(err, i, j);
         spheres[i * (n + 1) + j] = dc_jkr_sphere_pair_of(Yeff[i][j], work[i][j]);
       }
+    if (law < LAW_MD) return;
+    registry.registerProperty("equilibriumSeparation", &dcCreateEquilibriumSeparation, caller);
+    registry.connect("equilibriumSeparation", z0, caller);
+    md.assign((n + 1) * (n + 1), dc_md_sphere_pair());
+    for (int i = 1; i <= n; i++)
+      for (int j = 1; j <= n; j++)
+        if (work[i][j] > 0.0 && dc_md_sphere_pair_of(Yeff[i][j], work[i][j], z0[i][j], &md[i * (n + 1) + j], &err) != DC_OK)
+          stopParam(err, i, j);
   }
 
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const int lw = lawOf(sidata);
+    if (lw == LAW_MD) {
+      if (!mdForce(sidata, sidata.deltan, sidata.vn, i_forces, j_forces)) publishNone(sidata);
+      return;
+    }
     double &formed = sidata.contact_history[contact_offset];
     const bool forming = !(formed > 0.0);   /* formed is 0 or 1: one test, where == 0 takes a NaN-aware three */
     formed = 1.0;
-    if (!forming && law == LAW_JKR && !superquadric(sidata) && !patchStored()) {
+    if (!forming && lw == LAW_JKR && !superquadric(sidata) && !patchStored()) {
       /* spheres at the Hertz-like end, the patch not stored: the inline
          hot path of dc_jkr_sphere (the same bits) */
       const int itype = sidata.itype, jtype = sidata.jtype;
@@ -123,7 +155,7 @@ public:
         return;
       }
     }
-    if (law == LAW_DMT && !superquadric(sidata) && !patchStored()) {
+    if (lw == LAW_DMT && !superquadric(sidata) && !patchStored()) {
       /* DMT spheres, the patch not stored: the inline path of dc_dmt_contact (the same bits) */
       const int itype = sidata.itype, jtype = sidata.jtype;
       const double R = sphereEffectiveRadius(sidata), delta = sidata.deltan;
@@ -135,24 +167,36 @@ public:
         return;
       }
     }
-    if (!jkrForce(sidata, sidata.deltan, sidata.vn, forming, i_forces, j_forces)) publishNone(sidata);
+    if (!jkrForce(sidata, sidata.deltan, sidata.vn, forming, lw, i_forces, j_forces)) publishNone(sidata);
   }
 
   /* A formed contact with negative overlap: tensile JKR force until delta_break. */
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
+    SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
+    const int lw = lawOf(sidata);
+    double delta, vn;
+    if (lw == LAW_MD) {
+      /* apart: most pairs handed here are beyond the zone's reach h0 */
+      const dc_md_contact *h = reinterpret_cast<const dc_md_contact *>(&sidata.contact_history[md_offset]);
+      const double reach = sidata.radsum + md[sidata.itype * (ntypes_ + 1) + sidata.jtype].h0;
+      if (h->phase == DC_MD_APART && !sidata.is_wall && sidata.rsq >= reach * reach) return release(scdata);
+      delta = closeSphereContact(scdata, vn);
+      if (!mdForce(sidata, delta, vn, i_forces, j_forces)) return release(scdata);
+      if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+      sidata.has_force_update = true;
+      return;
+    }
     double &formed = scdata.contact_history[contact_offset];
     const double w = work[scdata.itype][scdata.jtype];
-    if (formed == 0.0 || w == 0.0 || law == LAW_DMT) return release(scdata);
-    SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
-    double delta, vn;
+    if (formed == 0.0 || w == 0.0 || lw == LAW_DMT) return release(scdata);
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
     if (atom->superquadric_flag) {
       if (!gap.closeOverlap(lmp, sidata, sidata.radsum, delta, vn)) return release(scdata);
     } else
 #endif
     delta = closeSphereContact(scdata, vn);
-    if (!jkrForce(sidata, delta, vn, false, i_forces, j_forces)) return release(scdata);
+    if (!jkrForce(sidata, delta, vn, false, lw, i_forces, j_forces)) return release(scdata);
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     sidata.has_force_update = true;
   }
@@ -175,7 +219,7 @@ private:
 
   /* Applies the force at overlap delta; false (nothing applied) when the
      contact has separated (delta < delta_break). */
-  bool jkrForce(SurfacesIntersectData &sidata, double delta, double vn, bool forming,
+  bool jkrForce(SurfacesIntersectData &sidata, double delta, double vn, bool forming, int lw,
                 ForceData &i_forces, ForceData &j_forces)
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
@@ -186,7 +230,7 @@ private:
     relativeRadii(sidata, R_major, R_minor, ax);
     dc_contact c;
     double P, Sn, kn, kt;
-    if (law == LAW_DMT) {
+    if (lw == LAW_DMT) {
       dc_hertz_geom g;
       if (sq) {
         const int st = dc_hertz_geometry(R_major, R_minor, &g);
@@ -257,12 +301,59 @@ private:
     return true;
   }
 
+  /* The law of this contact: adhesionLaw, or under tabor the one the
+     pair's Tabor parameter picks; w = 0: JKR's path (Hertz). */
+  int lawOf(const SurfacesCloseData &d) const
+  {
+    if (law < LAW_MD) return law;
+    const int k = d.itype * (ntypes_ + 1) + d.jtype;
+    if (work[d.itype][d.jtype] == 0.0) return LAW_JKR;
+    if (law == LAW_MD) return LAW_MD;
+    static const int of_tabor[] = {LAW_JKR, LAW_DMT, LAW_MD};   /* by DC_ADHESION_JKR, _DMT, _MD */
+    return of_tabor[dc_md_tabor_law(&md[k], sphereEffectiveRadius(d))];
+  }
+
+  /* Maugis-Dugdale (spheres) at overlap delta: false (nothing applied)
+     when the contact is apart. Damping on the punch stiffness 2 E* a
+     (none while only the zone acts). */
+  bool mdForce(SurfacesIntersectData &sidata, double delta, double vn, ForceData &i_forces, ForceData &j_forces)
+  {
+    const int itype = sidata.itype, jtype = sidata.jtype;
+    const dc_md_sphere_pair &p = md[itype * (ntypes_ + 1) + jtype];
+    dc_md_contact *h = reinterpret_cast<dc_md_contact *>(&sidata.contact_history[md_offset]);
+    const bool forming = h->phase == DC_MD_APART;
+    const double R = sphereEffectiveRadius(sidata);
+    double F, a;
+    const int st = dc_md_sphere(&p, R, delta, h, &F, &a);
+    if (st != DC_OK) fail("Maugis-Dugdale contact", delta, R, R, work[itype][jtype], Yeff[itype][jtype], st);
+    if (h->phase == DC_MD_APART) return false;
+    if (forming) checkReach(sidata, dc_md_reach(h->lambda) * p.Cd * (h->lambda / p.Lam), whyReach(), work[itype][jtype]);
+    double kn = 0.0, kt = 0.0;
+    if (a > 0.0) {
+      kn = dc_punch_stiffness_circle(Yeff[itype][jtype], a);
+      kt = dc_mindlin_kt_circle(Geff[itype][jtype], a);
+      checkHertzRange(sidata, a * a, R);
+    }
+    applyForce(sidata, F, delta, vn, kn, kn, kt, i_forces, j_forces);
+    double axis[3];
+    double *ax = axisWanted(axis);
+    if (ax) {
+      const double sF = p.piw * R;
+      dc_contact c = {F, kn, M_PI * a * a, a, a, 0.0, a > 0.0};
+      if (a > 0.0) c.F_bound = dc_md_friction_load(h, F / sF) * sF;
+      if (!(c.F_bound >= 0.0)) fail("Maugis-Dugdale pull-off force", delta, R, R, work[itype][jtype], Yeff[itype][jtype], DC_ENOCONV);
+      publish(sidata, c, ax);
+    }
+    return true;
+  }
+
   static const char *whyReach() { return "adhesive contacts (work of adhesion %g J/m^2) are kept until separation"; }
-  enum { LAW_JKR = 0, LAW_DMT = 1 };
-  double **work;
+  enum { LAW_JKR = 0, LAW_DMT = 1, LAW_MD = 2, LAW_TABOR = 3 };
+  double **work, **z0 = NULL;
   int law;   /* adhesionLaw */
   std::vector<dc_jkr_sphere_pair> spheres;   /* per type pair, for the sphere hot path */
-  int contact_offset, hint_offset;
+  std::vector<dc_md_sphere_pair> md;         /* per type pair (maugis, tabor) */
+  int contact_offset, hint_offset, md_offset = -1;
 #ifdef SUPERQUADRIC_ACTIVE_FLAG
   SuperquadricGap gap;
 #endif

@@ -22,7 +22,8 @@
    adhesion map: JKR above lambda ~ 5, DMT below ~ 0.1). The Tabor
    parameter mu_T = (R w^2/(E*^2 z0^3))^1/3 of a Lennard-Jones surface
    potential with equilibrium separation z0 maps to lambda = 1.1570 mu_T
-   (sigma0 the potential's largest stress 16 w/(9 3^1/2 z0), h0 = 0.971 z0).
+   (sigma0 the potential's largest stress 16 w/(9 3^1/2 z0), h0 = w/sigma0 =
+   9 3^1/2 z0 / 16 = 0.974 z0).
 
    Numerics: MD1 is solved for s (its left side increases with s from -1
    at s = 0), with the bracket s + (s^2 - 1) arctan s taken from its series
@@ -95,6 +96,91 @@ int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, dou
    folds (outputs untouched: take dc_md_at_overlap); DC_EDOM
    outside lambda's and abar's domain or for a guess outside it. */
 int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar);
+
+/* The zone-only states (no contact: a Dugdale zone r < c alone, the gap
+   h0 at r = c; Johnson & Greenwood 1997): with the surfaces' approach
+   under a uniform stress sigma0 on a circle (4 sigma0 c / (pi E*) at its
+   edge, 2 sigma0 c / E* at its centre),
+     Dbar = cbar^2/2 - (8 lambda/(3 pi)) cbar - 2/(pi lambda),   Pbar = -(pi/2) lambda cbar^2,
+   which meet the contact branch's abar -> 0 end (dc_md_state_zero) where
+   the centre's gap closes. The stable part (Dbar growing with cbar) is
+   cbar >= c_z = 8 lambda/(3 pi), present only when the end's cbar0 > c_z
+   (lambda below about 0.93): *zone = 1 with cbar, Pbar there for
+   Dbar between its fold -c_z^2/2 - 2/(pi lambda) and the end's Dbar0;
+   else *zone = 0 and zeros. DC_EDOM unless lambda lies in [1e-10, 1e10]
+   and |Dbar| <= 1e30. */
+int dc_md_zone(double lambda, double Dbar, int *zone, double *cbar, double *Pbar);
+
+/* A bound on how far before touch the model acts, in units of Dbar: the
+   approach reaches the zone at Dbar = -2/(pi lambda), the last attached
+   state lies at the contact branch's separation overlap (within [-1, 0]
+   for every lambda: JKR's -0.909, -0.997 near lambda 0.85; unit test) or
+   the zone's fold: max(1, c_z^2/2 + 2/(pi lambda) where the zone is
+   stable). NaN outside lambda's domain. */
+double dc_md_reach(double lambda);
+
+/* An overlap-controlled Maugis-Dugdale contact (a DEM contact's history):
+   phase DC_MD_APART, DC_MD_ZONE (x = cbar) or DC_MD_CONTACT (x = abar,
+   s = (m^2 - 1)^1/2), lambda of the pair, Pc the pull-off force under
+   load control (0 until dc_md_friction_load asks). Zeros: apart. */
+enum { DC_MD_APART = 0, DC_MD_ZONE = 1, DC_MD_CONTACT = 2 };
+typedef struct {
+  double phase, x, s, lambda, Pc;
+} dc_md_contact;
+#define DC_MD_CONTACT_NFIELDS 5
+extern const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS];   /* none flips */
+
+/* One step of the contact h at the overlap Dbar (Johnson & Greenwood's
+   overlap-controlled loop): apart until Dbar reaches -2/(pi lambda), where
+   the state jumps to the zone's stable state (if the zone is stable there)
+   or to the contact branch; the zone's states until Dbar passes the
+   branch end's Dbar0 (contact) or the zone's fold (apart); the stable
+   contact branch (Newton from the previous state, about 100 ns a step)
+   down to its separation overlap, then the zone or apart. *Pbar the force,
+   *abar the contact radius (0 unless in contact); h updated. The jumps
+   (into contact, out of it) take the reference (dc_md_at_overlap, about
+   0.1 ms) only where Newton from a JKR- or DMT-like guess fails.
+   DC_EDOM for h->lambda outside [1e-10, 1e10] or |Dbar| > 1e30;
+   DC_ENOCONV if the reference fails (h untouched on error). */
+int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar);
+
+/* The load that bounds friction, F + 2 |F_c| with F_c the pull-off force
+   under load control (JKR's and DMT's choice: dc_jkr_friction_load, the
+   DMT contact), F and the result in units of pi w R; the pull-off kept in
+   h->Pc, searched (dc_md_pulloff) on the contact's first call. NaN if the
+   search fails. */
+double dc_md_friction_load(dc_md_contact *h, double Pbar);
+
+/* Spheres in SI units: a type pair's constants (E*, w, the Lennard-Jones
+   equilibrium separation z0 giving sigma0 = 16 w/(9 3^1/2 z0), h0 =
+   w/sigma0) and the law a Tabor parameter picks. */
+typedef struct {
+  double Lam;       /* lambda = Lam R^1/3 */
+  double Cd, Ca;    /* the overlap's and the radius' scales, Cd R^1/3 and Ca R^2/3 */
+  double piw;       /* the force's scale pi w R */
+  double h0;        /* the zone's reach before touch [m] */
+  double R_jkr, R_dmt;   /* Tabor 5 and 0.1: the effective radii above and below which JKR and DMT hold */
+} dc_md_sphere_pair;
+
+/* The constants; DC_EDOM (with err) unless Estar > 0, w > 0 and z0 > 0,
+   all finite, with finite scales. */
+int dc_md_sphere_pair_of(double Estar, double w, double z0, dc_md_sphere_pair *p, dc_param_error *err);
+
+/* The adhesion law the Tabor parameter mu_T = lambda / 1.1570 of the
+   effective radius R picks (Johnson & Greenwood's adhesion map): JKR above
+   mu_T = 5, DMT below 0.1, Maugis-Dugdale between. */
+enum { DC_ADHESION_JKR = 0, DC_ADHESION_DMT = 1, DC_ADHESION_MD = 2 };
+static inline int dc_md_tabor_law(const dc_md_sphere_pair *p, double R)
+{
+  return R > p->R_jkr ? DC_ADHESION_JKR : R < p->R_dmt ? DC_ADHESION_DMT : DC_ADHESION_MD;
+}
+
+/* A sphere contact of effective radius R [m] at overlap delta [m]: one
+   dc_md_step in SI units. *F [N] and *a [m]; h's lambda set as the
+   contact leaves DC_MD_APART (R is the pair's for the contact's life).
+   Apart with delta <= -h0: nothing computed. DC_EDOM for R <= 0 or a
+   lambda outside [1e-10, 1e10] (h untouched), else dc_md_step's status. */
+int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a);
 
 /* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
    principal radii R_major, R_minor: the adhesive force of the rigid gap
