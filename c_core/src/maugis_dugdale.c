@@ -405,7 +405,7 @@ int dc_md_sphere_pair_of(double Estar, double w, double z0, dc_md_sphere_pair *p
   q.R_jkr = l5 * l5 * l5;
   q.R_dmt = l01 * l01 * l01;
   if (!(isfinite(q.Lam) && q.Lam > 0.0 && q.Cd > 0.0 && isfinite(q.Cd) && q.Ca > 0.0 && isfinite(q.Ca) &&
-        isfinite(q.piw) && q.h0 > 0.0 && isfinite(q.h0))) {
+        isfinite(q.piw) && q.h0 > 0.0 && isfinite(q.h0) && q.R_dmt > 0.0 && q.R_dmt < q.R_jkr && isfinite(q.R_jkr))) {
     dc_param_check("equilibriumSeparation", z0, 0.0, 1, 0.0, 1, "a range whose scales are finite doubles", err);
     return DC_EDOM;
   }
@@ -429,9 +429,11 @@ int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_conta
   double P, ab;
   const int st = dc_md_step(delta / (p->Cd * r3), &t, &P, &ab);
   if (st != DC_OK) return st;
+  const double f = P * p->piw * r3 * r3 * r3, rad = ab * p->Ca * r3 * r3;
+  if (!(fabs(f) <= DBL_MAX && rad <= DBL_MAX)) return DC_ERANGE;
   *h = t;
-  *F = P * p->piw * r3 * r3 * r3;
-  *a = ab * p->Ca * r3 * r3;
+  *F = f;
+  *a = rad;
   return DC_OK;
 }
 

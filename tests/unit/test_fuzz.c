@@ -1228,6 +1228,136 @@ static void fuzz_maugis_dugdale(void)
     }
   }
   fz_done(f);
+  f = fz_new("dc_md_zone");
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    const double lam = A(U() < 0.8 ? fz_log(1e-10, 1e10) : fz_wild()), D = A(U() < 0.8 ? fz_sign(fz_log(1e-6, 1e6)) : fz_wild());
+    const int bad = !ALLFIN(lam, D);
+    double c, P;
+    int zone;
+    SENTINEL(c);
+    SENTINEL(P);
+    SENTINEL(zone);
+    const int st = dc_md_zone(lam, D, &zone, &c, &P);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && fabs(D) <= 1e30,
+             UNTOUCHED(c) && UNTOUCHED(P) && UNTOUCHED(zone), ALLFIN(c, P) && (zone == 0 || zone == 1) && P <= 0.0,
+             "lambda %.17g Dbar %.17g", lam, D);
+    /* a zone state lies on the zone's curve, on its stable side */
+    const double cz = 8.0 * lam / (3.0 * M_PI);
+    FZ_EXPECT(f, st != DC_OK || !zone || (c >= cz && fabs(0.5 * c * c - cz * c - 2.0 / (M_PI * lam) - D) <=
+                                                         1e-9 * (fabs(D) + 0.5 * c * c + cz * c + 2.0 / (M_PI * lam))),
+              "not the zone's stable state", "lambda %.17g Dbar %.17g: cbar %.17g", lam, D, c);
+  }
+  fz_done(f);
+  fz_fn *fr = fz_new("dc_md_reach");
+  for (long k = 0; k < N_CALLS; k++) {
+    const double lam = A(U() < 0.8 ? fz_log(1e-10, 1e10) : fz_wild()), r = dc_md_reach(lam);
+    fr->calls++;
+    const int dom = isfinite(lam) && lam >= 1e-10 && lam <= 1e10;
+    FZ_EXPECT(fr, dom ? isfinite(r) && r >= 1.0 && r >= 2.0 / (M_PI * lam) * (1.0 - 1e-15) : isnan(r),
+              "not a reach >= max(1, 2/(pi lambda)) (NaN outside the domain)", "lambda %.17g: %.17g", lam, r);
+  }
+  fz_done(fr);
+  /* random overlap paths from apart: the states are the zone's or the branch's (the
+     reference every 97th contact step) and the force vanishes apart */
+  f = fz_new("dc_md_step");
+  for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
+    const double lam = A(U() < 0.9 ? fz_log(1e-4, 1e4) : fz_wild());
+    dc_md_contact h = {0.0, 0.0, 0.0, lam, 0.0};
+    double D = -dc_md_reach(isfinite(lam) && lam >= 1e-10 && lam <= 1e10 ? lam : 1.0) - U();
+    for (int i = 0; i < 40; i++) {
+      fz_call();
+      D = U() < 0.95 ? D + (U() - 0.3) * 0.5 * U() * U() : fz_wild();
+      const int bad = !ALLFIN(lam, D);
+      double P, a;
+      dc_md_contact h0 = h;
+      SENTINEL(P);
+      SENTINEL(a);
+      const int st = dc_md_step(D, &h, &P, &a);
+      FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && fabs(D) <= 1e30,
+               UNTOUCHED(P) && UNTOUCHED(a) && !memcmp(&h, &h0, sizeof h),
+               ALLFIN(P, a, h.x, h.s) && a >= 0.0 && (h.phase == DC_MD_APART || h.phase == DC_MD_ZONE || h.phase == DC_MD_CONTACT),
+               "lambda %.17g Dbar %.17g step %d", lam, D, i);
+      if (st != DC_OK) {
+        h = h0;
+        if (!isfinite(D) || fabs(D) > 1e30) D = 0.0;
+        continue;
+      }
+      if (h.phase == DC_MD_APART) {
+        FZ_EXPECT(f, P == 0.0 && a == 0.0, "a force while apart", "lambda %.17g Dbar %.17g", lam, D);
+      } else if (h.phase == DC_MD_ZONE) {
+        int zone;
+        double c, Pz;
+        FZ_EXPECT(f, dc_md_zone(lam, D, &zone, &c, &Pz) == DC_OK && zone && Pz == P && a == 0.0,
+                  "not the zone's state", "lambda %.17g Dbar %.17g", lam, D);
+      } else if ((k + i) % 97 == 0) {
+        int contact;
+        double ar, mr, Pr;
+        FZ_EXPECT(f, dc_md_at_overlap(lam, D, &contact, &ar, &mr, &Pr) == DC_OK && contact &&
+                         fabs(Pr - P) <= 1e-9 * (1.0 + fabs(Pr)) && fabs(ar - a) <= 1e-9 * ar,
+                  "not the stable branch's state", "lambda %.17g Dbar %.17g: P %.17g", lam, D, P);
+      }
+    }
+  }
+  fz_done(f);
+  f = fz_new("dc_md_friction_load");
+  for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
+    const double lam = A(U() < 0.9 ? fz_log(1e-10, 1e10) : fz_wild()), P = A(U() < 0.9 ? -2.0 + 10.0 * U() : fz_wild());
+    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, lam, 0.0};
+    const double L = dc_md_friction_load(&h, P);
+    f->calls++;
+    const int dom = isfinite(lam) && lam >= 1e-10 && lam <= 1e10;
+    FZ_EXPECT(f, !dom ? isnan(L) : !isfinite(P) || (L == P - 2.0 * h.Pc && h.Pc >= -2.0 - 1e-12 && h.Pc <= -1.5 + 1e-12),
+              "not F + 2 |F_c| (NaN outside lambda's domain)", "lambda %.17g Pbar %.17g: %.17g", lam, P, L);
+  }
+  fz_done(f);
+  f = fz_new("dc_md_sphere_pair_of");
+  fz_fn *fl = fz_new("dc_md_tabor_law");
+  fz_fn *fp = fz_new("dc_md_sphere");
+  for (long k = 0; k < N_CALLS / 100 + 1; k++) {
+    fz_call();
+    const double E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_wild()), w = A(U() < 0.8 ? fz_log(1e-4, 1.0) : fz_wild());
+    const double z0 = A(U() < 0.8 ? fz_log(1e-10, 1e-6) : fz_wild());
+    const int bad = !ALLFIN(E, w, z0);
+    dc_md_sphere_pair p;
+    dc_param_error err;
+    SENTINEL(p);
+    const int st = dc_md_sphere_pair_of(E, w, z0, &p, &err);
+    FZ_CHECK(f, st, bad || !(E > 0.0 && w > 0.0 && z0 > 0.0), 0, UNTOUCHED(p),
+             ALLFIN(p.Lam, p.Cd, p.Ca, p.piw, p.h0, p.R_jkr, p.R_dmt) && p.Lam > 0.0 && p.h0 > 0.0 && p.R_dmt > 0.0 &&
+                 p.R_dmt < p.R_jkr,
+             "E* %.17g w %.17g z0 %.17g", E, w, z0);
+    if (st != DC_OK) continue;
+    /* the law a radius picks: JKR above R_jkr, DMT below R_dmt */
+    const double R = A(U() < 0.8 ? fz_log(1e-9, 1.0) : fz_pos());
+    const int law = dc_md_tabor_law(&p, R);
+    fl->calls++;
+    FZ_EXPECT(fl, law == (R > p.R_jkr ? DC_ADHESION_JKR : R < p.R_dmt ? DC_ADHESION_DMT : DC_ADHESION_MD),
+              "not the law of the Tabor parameter", "R %.17g", R);
+    /* a short approach and retreat: the force vanishes apart and before -h0 */
+    dc_md_contact h = {0};
+    double d = -2.0 * p.h0;
+    for (int i = 0; i < 6; i++) {
+      fz_call();
+      d = i < 6 ? d + (i < 3 ? 1.0 : -1.0) * p.h0 * U() * 2.0 : d;
+      double F, a;
+      dc_md_contact h0 = h;
+      SENTINEL(F);
+      SENTINEL(a);
+      const int s2 = dc_md_sphere(&p, R, d, &h, &F, &a);
+      const double lam = h0.phase == DC_MD_APART ? p.Lam * cbrt(R) : h0.lambda;
+      FZ_CHECK(fp, s2, 0, R > 0.0 && R <= DBL_MAX && h0.phase == DC_MD_APART && d <= -p.h0, UNTOUCHED(F) && UNTOUCHED(a) && !memcmp(&h, &h0, sizeof h),
+               ALLFIN(F, a) && a >= 0.0, "E* %.17g w %.17g z0 %.17g R %.17g delta %.17g", E, w, z0, R, d);
+      FZ_EXPECT(fp, s2 != DC_OK || h.phase != DC_MD_APART || (F == 0.0 && a == 0.0), "a force while apart",
+                "R %.17g delta %.17g", R, d);
+      FZ_EXPECT(fp, s2 != DC_EDOM || !(R > 0.0 && lam >= 1e-10 && lam <= 1e10), "DC_EDOM inside lambda's domain",
+                "R %.17g delta %.17g lambda %.17g", R, d, lam);
+      if (s2 != DC_OK) break;
+    }
+  }
+  fz_done(fl);
+  fz_done(fp);
+  fz_done(f);
   fz_fn *fs = fz_new("dc_dmt_sphere");
   for (long k = 0; k < N_CALLS; k++) {
     const double R = A(U() < 0.8 ? fz_log(1e-7, 1.0) : fz_pos()), E = A(U() < 0.8 ? fz_log(1e5, 1e12) : fz_pos());

@@ -3,7 +3,10 @@
    an independent mpmath solution of the model's equations
    (tests/reference/maugis.csv, gen_maugis.py: lambda from 0.01 to 100)
    within 1e-10 and 1e-8; the published limits (JKR 3/2 pi w R as
-   lambda -> inf, DMT 2 pi w R as lambda -> 0); the Tabor mapping; domain. */
+   lambda -> inf, DMT 2 pi w R as lambda -> 0); the Tabor mapping; the
+   zone-only states, the reach bound over lambda, the overlap-controlled loop
+   (dc_md_step) against the reference along loading and unloading paths,
+   spheres in SI units (dc_md_sphere) against the csv; domain. */
 #include "check.h"
 #include "dc/maugis_dugdale.h"
 #include "dc/status.h"
@@ -160,6 +163,157 @@ int main(void)
       n++;
     }
     CHECK(n == 100000 && same);
+  }
+
+  /* the zone-only states: they meet the branch's end (lambda below ~0.93) and fold at
+     -c_z^2/2 - 2/(pi lambda); none where the end's cbar0 < c_z */
+  {
+    const double lz[] = {0.01, 0.1, 0.5, 0.9};
+    for (int L = 0; L < 4; L++) {
+      const double l = lz[L], cz = 8.0 * l / (3.0 * M_PI), Df = -0.5 * cz * cz - 2.0 / (M_PI * l);
+      double cz0, Pz0, Dz0, cb, Pb;
+      int zone;
+      CHECK(dc_md_state_zero(l, &cz0, &Pz0, &Dz0) == DC_OK);
+      CHECK(dc_md_zone(l, Dz0, &zone, &cb, &Pb) == DC_OK && zone == 1);
+      CHECK_REL(cb, cz0, 1e-12, "zone at the branch's end: cbar0");
+      CHECK_REL(Pb, Pz0, 1e-12, "zone at the branch's end: Pbar0");
+      CHECK(dc_md_zone(l, Df * (1.0 - 1e-12), &zone, &cb, &Pb) == DC_OK && zone == 1);
+      CHECK(cb >= cz && cb - cz <= 1.01 * sqrt(2e-12 * fabs(Df)));   /* the fold at c_z: cbar - c_z = (2 (Dbar - Df))^1/2 */
+      CHECK(dc_md_zone(l, Df * (1.0 + 1e-12), &zone, &cb, &Pb) == DC_OK && zone == 0 && Pb == 0.0);
+      CHECK(dc_md_zone(l, Dz0 + 1e-9, &zone, &cb, &Pb) == DC_OK && zone == 0);
+    }
+    double cb, Pb;
+    int zone;
+    CHECK(dc_md_zone(2.0, -0.5, &zone, &cb, &Pb) == DC_OK && zone == 0);
+    CHECK(dc_md_zone(0.0, -0.5, &zone, &cb, &Pb) == DC_EDOM);
+  }
+  /* the reach bound over lambda: the branch's separation overlap lies in [-1, 0], the
+     zone's fold within the bound where the zone is stable, and where the approach lands
+     on the contact branch (cbar0 < 2 c_z) the branch is there (-2/(pi lambda) >= its
+     separation overlap) */
+  {
+    int n = 0, ok = 1;
+    double least = 0.0;
+    for (int k = 0; k <= 60; k++) {
+      const double l = k <= 20 ? pow(10.0, -3.0 + 0.1 * k) : k <= 40 ? 0.6 + 0.03 * (k - 20) : pow(10.0, 0.2 + 0.14 * (k - 40));
+      double Ds, as, c0, P0, D0;
+      CHECK(dc_md_separation(l, &Ds, &as) == DC_OK);
+      dc_md_state_zero(l, &c0, &P0, &D0);
+      const double cz = 8.0 * l / (3.0 * M_PI), Din = -2.0 / (M_PI * l), reach = dc_md_reach(l);
+      least = fmin(least, Ds);
+      ok &= Ds >= -1.0 && Ds <= 0.0 && reach >= 1.0 && reach >= -Din;
+      if (c0 > cz) ok &= reach >= 0.5 * cz * cz + 2.0 / (M_PI * l);
+      if (c0 < 2.0 * cz) ok &= Din >= Ds;
+      n++;
+    }
+    printf("  reach bound over %d lambdas from 1e-3 to 1e3: holds %d; least separation overlap %.6f\n", n, ok, least);
+    CHECK(ok && least > -1.0 && least < -0.99);
+    CHECK(isnan(dc_md_reach(0.0)));
+  }
+  /* the overlap-controlled loop: loading from apart to Dbar 3 and back to apart, 4000 steps
+     each way, against the reference (the stable branch from dc_md_at_overlap, the zone from
+     dc_md_zone); the attraction begins at -2/(pi lambda) and ends at the lowest attached
+     overlap (the branch's separation overlap or the zone's fold) */
+  {
+    const double lams[] = {0.01, 0.1, 0.5, 0.8, 0.9, 0.95, 1.0, 2.0, 10.0, 1000.0};
+    double worst = 0.0, worst_in = 0.0, worst_out = 0.0;
+    int n = 0, refs = 0;
+    for (int L = 0; L < 10; L++) {
+      const double l = lams[L], reach = dc_md_reach(l), Din = -2.0 / (M_PI * l);
+      double Ds, as, c0, P0, D0;
+      dc_md_separation(l, &Ds, &as);
+      dc_md_state_zero(l, &c0, &P0, &D0);
+      const double cz = 8.0 * l / (3.0 * M_PI);
+      const double Dlo = c0 > cz ? -0.5 * cz * cz - 2.0 / (M_PI * l) : Ds;
+      dc_md_contact h = {0.0, 0.0, 0.0, l, 0.0};
+      const int steps = 4000;
+      const double Dstart = -reach - 0.5, Dmax = 3.0, dD = (Dmax - Dstart) / steps;
+      double first = NAN, last = NAN, prevD = NAN;
+      int was = 0;
+      for (int i = 0; i <= 2 * steps; i++) {
+        const double D = i <= steps ? Dstart + dD * i : Dmax - dD * (i - steps);
+        double P, a;
+        CHECK(dc_md_step(D, &h, &P, &a) == DC_OK);
+        const int att = h.phase != DC_MD_APART;
+        if (att && !was && i <= steps) first = D;
+        if (!att && was && i > steps) last = prevD;
+        was = att;
+        prevD = D;
+        /* the reference state */
+        double want = 0.0;
+        if (h.phase == DC_MD_CONTACT) {
+          int contact;
+          double ar, mr, Pr;
+          CHECK(dc_md_at_overlap(l, D, &contact, &ar, &mr, &Pr) == DC_OK && contact == 1);
+          want = Pr;
+          refs++;
+          worst = fmax(worst, fabs(a / ar - 1.0));
+        } else if (h.phase == DC_MD_ZONE) {
+          int zone;
+          double cb, Pb;
+          CHECK(dc_md_zone(l, D, &zone, &cb, &Pb) == DC_OK && zone == 1);
+          want = Pb;
+        } else {
+          CHECK(P == 0.0 && a == 0.0);
+        }
+        worst = fmax(worst, fabs(P - want) / (1.0 + fabs(want)));
+        n++;
+      }
+      /* the first attached step is the first at or above Din; the last the last at or above Dlo */
+      worst_in = fmax(worst_in, fabs(first - (Dstart + dD * ceil((Din - Dstart) / dD))) / dD);
+      worst_out = fmax(worst_out, fabs(last - (Dmax - dD * floor((Dmax - Dlo) / dD))) / dD);
+    }
+    printf("  overlap-controlled loops: %d steps (%d in contact) against the reference, worst %.3g; attraction begins "
+           "%.3g and ends %.3g steps from the model's overlaps\n", n, refs, worst, worst_in, worst_out);
+    CHECK(worst < 1e-12);
+    CHECK(worst_in < 1e-6 && worst_out < 1e-6);
+    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 0.0, 0.0};
+    double P, a;
+    CHECK(dc_md_step(1.0, &h, &P, &a) == DC_EDOM);
+  }
+  /* spheres in SI units: lambda = 1 at R (maugis.csv's overlap rows), the friction load
+     F + 2 |F_c| with the pull-off force of the csv; the Tabor choice; parameters */
+  {
+    const double E = 2e9, w = 0.05, z0 = 4e-10;
+    dc_md_sphere_pair p;
+    dc_param_error err;
+    CHECK(dc_md_sphere_pair_of(E, w, z0, &p, &err) == DC_OK);
+    const double R = 1.0 / (p.Lam * p.Lam * p.Lam), K = 4.0 / 3.0 * E;
+    const double sd = cbrt(M_PI * M_PI * w * w * R / (K * K)), sa = cbrt(M_PI * w * R * R / K), sF = M_PI * w * R;
+    CHECK_REL(2.0 * 16.0 * w / (9.0 * sqrt(3.0) * z0) * cbrt(R / (M_PI * w * K * K)), 1.0, 1e-14, "lambda 1 at R");
+    CHECK_REL(p.h0, 9.0 * sqrt(3.0) / 16.0 * z0, 1e-15, "h0 = w / sigma0");
+    FILE *g = check_open_reference("maugis.csv");
+    int rows = 0;
+    while (g && check_read_tagged_row(g, tag, sizeof tag, v, 5) > 0) {
+      if (v[0] != 1.0) continue;
+      if (!strcmp(tag, "overlap") && v[1] > 0.0) {   /* jumps from apart straight onto the branch */
+        dc_md_contact h = {0};
+        double F, aa;
+        CHECK(dc_md_sphere(&p, R, v[1] * sd, &h, &F, &aa) == DC_OK && h.phase == DC_MD_CONTACT);
+        CHECK_REL(F, v[3] * sF, 1e-9, "dc_md_sphere: force at the csv's overlap");
+        CHECK_REL(aa, v[2] * sa, 1e-9, "dc_md_sphere: contact radius at the csv's overlap");
+        rows++;
+      } else if (!strcmp(tag, "pulloff")) {
+        dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 1.0, 0.0};
+        CHECK_REL(dc_md_friction_load(&h, 0.5), 0.5 - 2.0 * v[1], 1e-9, "friction load F + 2 |F_c|");
+        rows++;
+      }
+    }
+    if (g) fclose(g);
+    CHECK(rows == 3);
+    dc_md_contact h = {0};
+    double F = 1.0, aa = 1.0;
+    CHECK(dc_md_sphere(&p, R, -1.001 * p.h0, &h, &F, &aa) == DC_OK && F == 0.0 && aa == 0.0 && h.phase == DC_MD_APART);
+    CHECK(dc_md_sphere(&p, R, -0.999 * p.h0, &h, &F, &aa) == DC_OK && F < 0.0 && h.phase == DC_MD_CONTACT);
+    CHECK(dc_md_sphere(&p, -R, 0.0, &h, &F, &aa) == DC_EDOM);
+    /* Tabor: JKR above 5, DMT below 0.1 */
+    CHECK_REL(p.Lam * cbrt(p.R_jkr), dc_md_lambda_of_tabor(5.0), 1e-14, "lambda at R_jkr: Tabor 5");
+    CHECK_REL(p.Lam * cbrt(p.R_dmt), dc_md_lambda_of_tabor(0.1), 1e-14, "lambda at R_dmt: Tabor 0.1");
+    CHECK(dc_md_tabor_law(&p, 1.01 * p.R_jkr) == DC_ADHESION_JKR && dc_md_tabor_law(&p, 0.99 * p.R_jkr) == DC_ADHESION_MD);
+    CHECK(dc_md_tabor_law(&p, 1.01 * p.R_dmt) == DC_ADHESION_MD && dc_md_tabor_law(&p, 0.99 * p.R_dmt) == DC_ADHESION_DMT);
+    CHECK(dc_md_sphere_pair_of(E, w, 0.0, &p, &err) == DC_EDOM && !strcmp(err.name, "equilibriumSeparation"));
+    CHECK(dc_md_sphere_pair_of(E, 0.0, z0, &p, &err) == DC_EDOM && !strcmp(err.name, "workOfAdhesion"));
+    CHECK(dc_md_sphere_pair_of(NAN, w, z0, &p, &err) == DC_EDOM);
   }
 
   /* domain */

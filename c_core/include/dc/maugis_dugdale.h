@@ -179,7 +179,8 @@ static inline int dc_md_tabor_law(const dc_md_sphere_pair *p, double R)
    dc_md_step in SI units. *F [N] and *a [m]; h's lambda set as the
    contact leaves DC_MD_APART (R is the pair's for the contact's life).
    Apart with delta <= -h0: nothing computed. DC_EDOM for R <= 0 or a
-   lambda outside [1e-10, 1e10] (h untouched), else dc_md_step's status. */
+   lambda outside [1e-10, 1e10], DC_ERANGE if F overflows (h untouched),
+   else dc_md_step's status. */
 int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a);
 
 /* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
