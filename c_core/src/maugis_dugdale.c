@@ -11,16 +11,21 @@ double dc_md_lambda_of_tabor(double mu_T)
 }
 
 /* s + (s^2 - 1) arctan s (MD1's first bracket): the series
-   sum_j>=1 (-1)^(j-1) 4j/(4j^2 - 1) s^(2j+1) below s = 1/4 (16 terms:
-   the next is below 1e-19 of the first) */
-static double md_g1(double s)
+   sum_j>=1 (-1)^(j-1) 4j/(4j^2 - 1) s^(2j+1) below s = 1/4 (up to 16
+   terms: the next is below 1e-19 of the first) */
+static const double md_g1_series[16] = {
+  4.0 / 3.0, -8.0 / 15.0, 12.0 / 35.0, -16.0 / 63.0, 20.0 / 99.0, -24.0 / 143.0, 28.0 / 195.0, -32.0 / 255.0,
+  36.0 / 323.0, -40.0 / 399.0, 44.0 / 483.0, -48.0 / 575.0, 52.0 / 675.0, -56.0 / 783.0, 60.0 / 899.0, -64.0 / 1023.0};
+static double md_g1_small(double s)
 {
-  if (s >= 0.25) return s + (s * s - 1.0) * atan(s);
   const double s2 = s * s;
+  /* the terms the sum needs: the first left out is below 3e-17 of the sum */
+  const int n = s2 < 1e-8 ? 2 : s2 < 1e-4 ? 4 : s2 < 1e-2 ? 8 : 16;
   double sum = 0.0;
-  for (int j = 16; j >= 1; j--) sum = (j & 1 ? 1.0 : -1.0) * 4.0 * j / (4.0 * j * j - 1.0) + s2 * sum;
+  for (int j = n - 1; j >= 0; j--) sum = md_g1_series[j] + s2 * sum;
   return s * s2 * sum;
 }
+static double md_g1(double s) { return s >= 0.25 ? s + (s * s - 1.0) * atan(s) : md_g1_small(s); }
 
 /* s arctan s - (1 + s^2)^1/2 + 1 (MD1's second bracket), without the cancellation */
 static double md_g2(double s) { return s * atan(s) - s * s / (sqrt(1.0 + s * s) + 1.0); }
@@ -184,81 +189,121 @@ int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, dou
   return DC_OK;
 }
 
-/* MD1's and MD3's residuals and Jacobian at (abar, s) for the overlap D,
-   one arctan and one root per point: g1, g2 (MD1's brackets) and their
-   derivatives g1' = 2 s arctan s + 2 s^2/(1 + s^2), g2' = arctan s +
-   s/(1 + s^2) - s/(1 + s^2)^1/2; norm: the larger residual scaled by the
-   sizes of its terms */
+/* The contact branch in the variable s: MD1 is a quadratic in abar,
+   A abar^2 + B abar = 1 with A = (lambda/2) g1(s), B = (4 lambda^2/3) g2(s),
+   so abar = 2/(B + (B^2 + 4 A)^1/2) and with it Pbar (MD2), Dbar (MD3) and
+   dDbar/ds (abar' = -(A' abar^2 + B' abar)/(B^2 + 4 A)^1/2; g1' = 2 s
+   arctan s + 2 s^2/(1 + s^2), g2' = arctan s + s/(1 + s^2) - s/(1 +
+   s^2)^1/2): one arctangent and two roots. Along the branch Dbar falls
+   from +inf (s -> 0: abar -> inf) to the abar -> 0 end (s -> inf), through
+   a least value (the fold) where lambda is above about 0.93. */
 typedef struct {
-  double r1, r2, norm, j11, j12, j21, j22, t;
+  double a, P, D, dD, da, dP, scale;   /* scale: the size of MD3's terms, for the residual */
 } md_point;
 
-static void md_eval(double lambda, double D, double a, double x, md_point *p)
+static void md_at_s(double lambda, double s, md_point *p)
 {
-  const double l2 = lambda * lambda, x2 = x * x, t = atan(x), q = sqrt(1.0 + x2);
-  const double g1 = x < 0.25 ? md_g1(x) : x + (x2 - 1.0) * t, g2 = x * t - x2 / (q + 1.0);
-  const double dg1 = 2.0 * x * t + 2.0 * x2 / (1.0 + x2), dg2 = t + x / (1.0 + x2) - x / q;
-  const double t1 = 0.5 * lambda * a * a * g1, t2 = 4.0 / 3.0 * l2 * a * g2;
-  const double u1 = a * a, u2 = 4.0 / 3.0 * lambda * a * x;
-  p->r1 = t1 + t2 - 1.0;
-  p->r2 = u1 - u2 - D;
-  p->norm = fmax(fabs(p->r1) / (1.0 + fabs(t1) + fabs(t2)), fabs(p->r2) / (fabs(u1) + fabs(u2) + fabs(D) + 1e-300));
-  p->j11 = lambda * a * g1 + 4.0 / 3.0 * l2 * g2;
-  p->j12 = 0.5 * lambda * a * a * dg1 + 4.0 / 3.0 * l2 * a * dg2;
-  p->j21 = 2.0 * a - 4.0 / 3.0 * lambda * x;
-  p->j22 = -4.0 / 3.0 * lambda * a;
-  p->t = t;
+  const double s2 = s * s, t = atan(s), q2 = 1.0 + s2, q = sqrt(q2), iq2 = 1.0 / q2;
+  /* s^2/(q + 1) = q - 1 without its cancellation below s = 1/4 */
+  const int small = s < 0.25;
+  const double g1 = small ? md_g1_small(s) : s + (s2 - 1.0) * t, g2 = s * t - (small ? s2 / (q + 1.0) : q - 1.0);
+  const double dg1 = 2.0 * s * (t + s * iq2), dg2 = t + s * iq2 - s * q * iq2;
+  const double l43 = 4.0 / 3.0 * lambda, A = 0.5 * lambda * g1, B = l43 * lambda * g2, root = sqrt(B * B + 4.0 * A);
+  const double a = 2.0 / (B + root), da = -(0.5 * lambda * dg1 * a + l43 * lambda * dg2) * a / root;
+  const double u = l43 * a * s, w = s + q2 * t;
+  p->a = a;
+  p->P = a * a * (a - lambda * w);
+  p->D = a * a - u;
+  p->da = da;
+  p->dD = 2.0 * a * da - l43 * (da * s + a);
+  p->dP = 3.0 * a * a * da - lambda * a * (2.0 * da * w + 2.0 * a * (1.0 + s * t));   /* w' = 2 + 2 s arctan s */
+  p->scale = a * a + u;
 }
 
-/* Newton on MD1 and MD3 from (a, x) (dc_md_at_overlap_near); *stable: the
-   root lies where the branch's overlap grows with abar (dD/dabar = -det/j12
-   with j12 = dMD1/ds > 0: det < 0) */
-static int md_newton(double lambda, double Dbar, double a, double x, double *abar, double *s, double *Pbar, int *stable)
+int dc_md_branch_s(double lambda, double s, double *abar, double *Pbar, double *Dbar, double *dDds)
 {
-  md_point p, pn;
-  md_eval(lambda, Dbar, a, x, &p);
-  for (int it = 0; it < 40; it++) {
-    if (p.norm <= 4.0 * DBL_EPSILON) {
-      const double P = a * a * (a - lambda * (x + (1.0 + x * x) * p.t));   /* MD2 */
-      if (!abar_ok(a) || !isfinite(P)) return DC_ENOCONV;
-      *abar = a;
-      *s = x;
-      *Pbar = P;
-      *stable = p.j11 * p.j22 - p.j12 * p.j21 < 0.0;
-      return DC_OK;
-    }
-    /* J (da, dx) = -(r1, r2) */
-    const double det = p.j11 * p.j22 - p.j12 * p.j21;
-    if (!(fabs(det) > 0.0) || !isfinite(det)) return DC_ENOCONV;
-    const double da = (-p.r1 * p.j22 + p.r2 * p.j12) / det, dx = (-p.r2 * p.j11 + p.r1 * p.j21) / det;
-    /* halved steps: a trust region (abar within a factor 4, s within 4 s + 1) and a falling residual */
-    double step = 1.0, an, xn;
-    for (int h = 0;; h++) {
-      if (h > 30) return DC_ENOCONV;
-      an = a + step * da;
-      xn = x + step * dx;
-      if (an > 0.25 * a && an < 4.0 * a && xn >= 0.0 && xn <= 4.0 * x + 1.0) {
-        md_eval(lambda, Dbar, an, xn, &pn);
-        if (pn.norm < p.norm || pn.norm <= 4.0 * DBL_EPSILON) break;
-      }
-      step *= 0.5;
-    }
-    a = an;
-    x = xn;
-    p = pn;
-  }
-  return DC_ENOCONV;
-}
-
-int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar)
-{
-  if (!lambda_ok(lambda) || !abar_ok(abar0) || !(s0 >= 0.0 && s0 <= 1e300) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
-  int stable;
-  return md_newton(lambda, Dbar, abar0, s0, abar, s, Pbar, &stable);
+  if (!lambda_ok(lambda) || !(s >= 1e-30 && s <= 1e30)) return DC_EDOM;
+  md_point p;
+  md_at_s(lambda, s, &p);
+  if (!(isfinite(p.a) && isfinite(p.P) && isfinite(p.D) && isfinite(p.dD))) return DC_ERANGE;
+  *abar = p.a;
+  *Pbar = p.P;
+  *Dbar = p.D;
+  *dDds = p.dD;
+  return DC_OK;
 }
 
 /* c_z = 8 lambda / (3 pi), where the zone's overlap is least */
 static double md_cz(double lambda) { return 8.0 / (3.0 * M_PI) * lambda; }
+
+/* The fold: the s in (0, inf) where dDbar/ds changes sign (the first s =
+   2^k, k from -40, with dDbar/ds >= 0, then bisection), or 0 where the
+   branch falls all the way to its end: where the zone-only states are
+   stable beyond the end (cbar0 > c_z), the curve of states rises through
+   the end and the branch has no fold (at its far end dDbar/ds is rounding) */
+static double md_fold_s(double lambda)
+{
+  double c0, P0, D0;
+  dc_md_state_zero(lambda, &c0, &P0, &D0);
+  if (c0 > md_cz(lambda)) return 0.0;
+  md_point p;
+  double lo = 0.0, hi = 0.0;
+  for (int k = -40; k <= 60; k++) {
+    const double s = ldexp(1.0, k);
+    md_at_s(lambda, s, &p);
+    if (p.dD >= 0.0) {
+      hi = s;
+      break;
+    }
+    lo = s;
+  }
+  if (hi == 0.0) return 0.0;
+  for (int it = 0; it < 200 && hi - lo > 4.0 * DBL_EPSILON * hi; it++) {
+    const double mid = 0.5 * (lo + hi);
+    md_at_s(lambda, mid, &p);
+    if (p.dD >= 0.0) hi = mid;
+    else lo = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+/* The stable branch's state at Dbar >= the separation overlap: Newton in s
+   from s0 inside a bracket (s_lo, s_hi) on which Dbar falls from above the
+   target to below it (s_hi: the fold, or none), halving the bracket
+   (geometrically) where Newton leaves it. Converged when the next Newton
+   step is below 1e-7 s: that step is then taken to first order (its
+   second-order term is of order 1e-14 of the state) without evaluating
+   the branch again. */
+static int md_solve(double lambda, double D, double sf, double s0, double *s, md_point *out)
+{
+  double lo = 0.0, hi = sf > 0.0 ? sf : HUGE_VAL, x = s0 > 0.0 && s0 < hi ? s0 : (hi < HUGE_VAL ? 0.5 * hi : 1.0);
+  md_point p;
+  for (int it = 0; it < 200; it++) {
+    md_at_s(lambda, x, &p);
+    const double r = p.D - D;
+    if (!isfinite(r)) return DC_ENOCONV;
+    const double dx = p.dD < 0.0 ? -r / p.dD : HUGE_VAL;
+    if (fabs(dx) <= 1e-7 * x) {
+      *s = x + dx;
+      p.a += p.da * dx;
+      p.P += p.dP * dx;
+      p.D = D;
+      *out = p;
+      return DC_OK;
+    }
+    if (r > 0.0) lo = x;   /* Dbar falls with s on the stable branch */
+    else hi = x;
+    double xn = x + dx;
+    if (!(xn > lo && xn < hi)) xn = hi < HUGE_VAL ? (lo > 0.0 ? sqrt(lo * hi) : 0.25 * hi) : 4.0 * x;
+    if (xn == lo || xn == hi) {   /* the bracket is one ulp wide: at the fold, to rounding */
+      *s = x;
+      *out = p;
+      return DC_OK;
+    }
+    x = xn;
+  }
+  return DC_ENOCONV;
+}
 
 int dc_md_zone(double lambda, double Dbar, int *zone, double *cbar, double *Pbar)
 {
@@ -284,97 +329,83 @@ double dc_md_reach(double lambda)
 
 const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS] = {
   {"md_phase", 0}, {"md_x", 0}, {"md_s", 0}, {"md_lambda", 0}, {"md_pulloff", 0},
+  {"md_sep", 0}, {"md_fold", 0}, {"md_last", 0}, {"md_slope", 0}, {"md_curve", 0},
 };
 
-/* The stable contact branch at Dbar from a guess: Newton from a JKR-like
-   guess (abar of JKR's Dbar = abar^2 - (2/3) (6 abar)^1/2, Newton in
-   u = abar^1/2 from the right of its root) and from a DMT-like one (abar^2
-   = Dbar - Dbar0 over the branch end, so abar s -> cbar0 as abar -> 0), the
-   likelier first; s from MD3. 1 with the state, 0 if neither converges to
-   the stable branch. */
-static int md_enter(double lambda, double D, double D0, double *a, double *x, double *P)
-{
-  const double ustar = pow(6.0, -1.0 / 6.0), k = 2.0 / 3.0 * sqrt(6.0);
-  double u = 1.5 + sqrt(sqrt(fmax(D, 0.0)));
-  for (int it = 0; it < 60; it++) {
-    const double f = u * u * u * u - k * u - D, du = f / (4.0 * u * u * u - k);
-    u = fmax(u - du, ustar);
-    if (fabs(du) <= 1e-3 * u) break;
-  }
-  const double a_jkr = u * u, a_dmt = sqrt(fmax(D - D0, 1e-6));
-  for (int pass = 0; pass < 2; pass++) {
-    const double a0 = (pass == 0) == (lambda >= 1.0) ? a_jkr : a_dmt;
-    const double s0 = fmax(0.75 * (a0 * a0 - D) / (lambda * a0), 0.0);
-    int stable;
-    if (md_newton(lambda, D, a0, s0, a, x, P, &stable) == DC_OK && stable) return 1;
-  }
-  return 0;
-}
-
-/* The state at Dbar after a jump or when Newton from the previous state
-   fails (dc_md_step): the contact branch if the contact holds or enters
-   it, else the zone, else apart. */
-static int md_settle(double D, dc_md_contact *h, double *Pbar, double *abar)
+/* Enters or keeps the contact branch at D from the guess s0; the fold and
+   the separation overlap found on the contact's first entry */
+static int md_contact(double D, dc_md_contact *h, double s0, double *Pbar, double *abar)
 {
   const double l = h->lambda;
-  double c0, P0, D0;
-  dc_md_state_zero(l, &c0, &P0, &D0);
-  const double cz = md_cz(l);
-  int to_contact;
-  if (h->phase == DC_MD_CONTACT) to_contact = 1;
-  else if (h->phase == DC_MD_ZONE) to_contact = D > D0;
-  else to_contact = !(c0 >= 2.0 * cz && D <= D0);   /* apart: the zone catches the jump where it is stable */
-  if (to_contact) {
-    double a, x, P, m;
-    int contact = 0;
-    if (h->phase != DC_MD_CONTACT && md_enter(l, D, D0, &a, &x, &P)) {
-      contact = 1;
+  if (h->Dsep == 0.0) {   /* the separation overlap is negative: 0 means not yet found */
+    h->sfold = md_fold_s(l);
+    if (h->sfold > 0.0) {
+      md_point p;
+      md_at_s(l, h->sfold, &p);
+      h->Dsep = p.D;
     } else {
-      const int st = dc_md_at_overlap(l, D, &contact, &a, &m, &P);
-      if (st != DC_OK) return st;
-      if (contact && !(a > 1e-20)) contact = 0;   /* the branch's end: the zone's state below */
-      if (contact) x = sqrt((m - 1.0) * (m + 1.0));
-    }
-    if (contact) {
-      h->phase = DC_MD_CONTACT;
-      h->x = a;
-      h->s = x;
-      *Pbar = P;
-      *abar = a;
-      return DC_OK;
+      double c0, P0;
+      dc_md_state_zero(l, &c0, &P0, &h->Dsep);
     }
   }
+  double s;
+  md_point p;
+  const int st = md_solve(l, D, h->sfold, s0, &s, &p);
+  if (st != DC_OK) return st;
+  /* d^2 s/dDbar^2 from the last two states on the branch, for the next predictor */
+  const double dDs = D - h->Dlast;
+  h->curve = h->phase == DC_MD_CONTACT && dDs != 0.0 ? (1.0 / p.dD - 1.0 / h->slope) / dDs : 0.0;
+  if (!isfinite(h->curve)) h->curve = 0.0;
+  h->phase = DC_MD_CONTACT;
+  h->x = p.a;
+  h->s = s;
+  h->Dlast = D;
+  h->slope = p.dD;
+  *Pbar = p.P;
+  *abar = p.a;
+  return DC_OK;
+}
+
+/* The zone's state at D, or apart */
+static void md_zone_or_apart(double D, dc_md_contact *h, double *Pbar, double *abar)
+{
   int zone;
   double c, P;
-  dc_md_zone(l, D, &zone, &c, &P);
+  dc_md_zone(h->lambda, D, &zone, &c, &P);
   h->phase = zone ? DC_MD_ZONE : DC_MD_APART;
   h->x = c;
   h->s = 0.0;
   *Pbar = P;
   *abar = 0.0;
-  return DC_OK;
 }
 
 int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar)
 {
   const double l = h->lambda;
   if (!lambda_ok(l) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
-  if (h->phase == DC_MD_CONTACT) {
-    double a, x, P;
-    int stable;
-    if (abar_ok(h->x) && md_newton(l, Dbar, h->x, h->s, &a, &x, &P, &stable) == DC_OK && stable) {
-      h->x = a;
-      h->s = x;
-      *Pbar = P;
-      *abar = a;
-      return DC_OK;
+  dc_md_contact t = *h;
+  int st = DC_OK;
+  if (t.phase == DC_MD_CONTACT) {
+    if (Dbar >= t.Dsep) {
+      /* the previous state and the tangent there: a first-order predictor */
+      const double dD = Dbar - t.Dlast, s1 = t.s + dD / t.slope + 0.5 * t.curve * dD * dD;
+      st = md_contact(Dbar, &t, s1 > 0.0 ? s1 : 0.25 * t.s, Pbar, abar);
+    } else {
+      md_zone_or_apart(Dbar, &t, Pbar, abar);
     }
-  } else if (h->phase == DC_MD_APART && Dbar < -2.0 / (M_PI * l)) {
+  } else if (t.phase == DC_MD_APART && Dbar < -2.0 / (M_PI * l)) {
     *Pbar = *abar = 0.0;
     return DC_OK;
+  } else {
+    double c0, P0, D0;
+    dc_md_state_zero(l, &c0, &P0, &D0);
+    const double cz = md_cz(l);
+    /* from apart the zone catches the jump where it is stable there; from the zone the
+       contact forms where the overlap passes the branch's end */
+    const int to_contact = t.phase == DC_MD_ZONE ? Dbar > D0 : !(c0 >= 2.0 * cz && Dbar <= D0);
+    if (to_contact) st = md_contact(Dbar, &t, 0.0, Pbar, abar);
+    else md_zone_or_apart(Dbar, &t, Pbar, abar);
   }
-  dc_md_contact t = *h;
-  const int st = md_settle(Dbar, &t, Pbar, abar);
   if (st == DC_OK) *h = t;
   return st;
 }

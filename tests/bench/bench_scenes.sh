@@ -80,6 +80,11 @@ configs=(
   # DMT (jkr_elliptic adhesionLaw dmt), at w = 0.05 J/m^2 and on the Hertz trajectory
   "sjd|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var tkey adhesionLaw -var tval dmt"
   "sjd0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9 -var tkey adhesionLaw -var tval dmt"
+  # Maugis-Dugdale (adhesionLaw maugis) at w = 0.05 J/m^2, z0 = 1 um (lambda
+  # 0.73-0.92: the transition), and on the Hertz trajectory (w = 1e-9, z0 =
+  # 0.4 nm: lambda 0.013-0.017, the zone's reach 0.39 nm)
+  "sjm|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var tkey adhesionLaw -var tval maugis"
+  "sjm0|$sph|jkr_elliptic|10000|1|-var cdf 1.02 -var w 1e-9 -var z0 4e-10 -var tkey adhesionLaw -var tval maugis"
   "sh1|$sph|hertz|10000|1|-var cdf 1.0001"
   "sr0|$sph|gw_rough|10000|1|-var cdf 1.0001 -var sigma 1e-12"
   # plasticity: hardness 1e5 Pa yields at 1e-3 r, so settling contacts go plastic
@@ -226,6 +231,9 @@ row(lambda sj, se: "2888 spheres: jkr_elliptic (w = 0.05 J/m^2) %.3f s = %.4f x 
 row(lambda sjd, sj: "    adhesionLaw dmt: %.3f s = %.4f x jkr_elliptic (JKR)" % (sjd, sjd / sj), "sjd", "sj")
 row(lambda sjd0, sj0: "    adhesionLaw dmt, w = 1e-9 (the Hertz trajectory): %.3f s = %.4f x jkr_elliptic (JKR)" % (sjd0, sjd0 / sj0),
     "sjd0", "sj0")
+row(lambda sjm, sj: "    adhesionLaw maugis (lambda 0.73-0.92): %.3f s = %.4f x jkr_elliptic (JKR)" % (sjm, sjm / sj), "sjm", "sj")
+row(lambda sjm0, sj0: "    adhesionLaw maugis, w = 1e-9 (the Hertz trajectory): %.3f s = %.4f x jkr_elliptic (JKR)"
+    % (sjm0, sjm0 / sj0), "sjm0", "sj0")
 row(lambda se2, sj0: "    w = 1e-9 J/m^2 (same trajectory as Hertz), contact distance 1.02: hertz_elliptic %.3f s, "
     "jkr_elliptic %.3f s = %.4f x" % (se2, sj0, sj0 / se2), "se2", "sj0")
 row(lambda sjp, sh: "2888 spheres: jamari_ep (hardness 1e5 Pa: plastic) %.3f s = %.4f x stock hertz" % (sjp, sjp / sh), "sjp", "sh")

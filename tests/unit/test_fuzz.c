@@ -1205,26 +1205,27 @@ static void fuzz_maugis_dugdale(void)
     }
   }
   fz_done(f);
-  f = fz_new("dc_md_at_overlap_near");
+  f = fz_new("dc_md_branch_s");
   for (long k = 0; k < N_CALLS / 10; k++) {
     fz_call();
-    const double lam = A(U() < 0.8 ? fz_log(1e-4, 1e4) : fz_wild()), D = A(U() < 0.8 ? -1.0 + 6.0 * U() : fz_wild());
-    const double a0 = A(U() < 0.8 ? fz_log(1e-3, 10.0) : fz_wild()), s0 = A(U() < 0.8 ? fz_log(1e-4, 1e3) : fz_wild());
-    const int bad = !ALLFIN(lam, D, a0, s0);
-    double a, x, P;
+    const double lam = A(U() < 0.8 ? fz_log(1e-10, 1e10) : fz_wild()), x = A(U() < 0.8 ? fz_log(1e-30, 1e30) : fz_wild());
+    const int bad = !ALLFIN(lam, x);
+    double a, P, D, dD;
     SENTINEL(a);
-    SENTINEL(x);
     SENTINEL(P);
-    const int st = dc_md_at_overlap_near(lam, D, a0, s0, &a, &x, &P);
-    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && a0 >= 1e-20 && a0 <= 1e20 && s0 >= 0.0 && s0 <= 1e300 &&
-             fabs(D) <= 1e30, UNTOUCHED(a) && UNTOUCHED(x) && UNTOUCHED(P), ALLFIN(a, x, P) && a > 0.0 && x >= 0.0,
-             "lambda %.17g Dbar %.17g abar0 %.17g s0 %.17g", lam, D, a0, s0);
-    /* a state of the branch (MD1) at the overlap asked for (MD3) */
-    if (st == DC_OK && a >= 1e-20 && a <= 1e20) {
+    SENTINEL(D);
+    SENTINEL(dD);
+    const int st = dc_md_branch_s(lam, x, &a, &P, &D, &dD);
+    FZ_CHECK(f, st, bad, !bad && lam >= 1e-10 && lam <= 1e10 && x >= 1e-30 && x <= 1e30,
+             UNTOUCHED(a) && UNTOUCHED(P) && UNTOUCHED(D) && UNTOUCHED(dD), ALLFIN(a, P, D, dD) && a > 0.0,
+             "lambda %.17g s %.17g", lam, x);
+    /* the branch's state at that abar (the solve in abar, within its domain) */
+    if (st == DC_OK && a >= 1e-20 && a <= 1e20 && x >= 1e-6 && x <= 1e6) {
       double m2, P2, D2;
-      FZ_EXPECT(f, dc_md_state(lam, a, &m2, &P2, &D2) == DC_OK && fabs(D2 - D) <= 1e-9 * (1.0 + fabs(D)) &&
-                   fabs(P2 - P) <= 1e-9 * (1.0 + fabs(P)),
-                "not the branch's state at that overlap", "lambda %.17g Dbar %.17g abar0 %.17g s0 %.17g", lam, D, a0, s0);
+      const double sc = a * a + 4.0 / 3.0 * lam * a * x;
+      FZ_EXPECT(f, dc_md_state(lam, a, &m2, &P2, &D2) == DC_OK && fabs(D2 - D) <= 1e-9 * sc &&
+                       fabs(P2 - P) <= 1e-9 * (fabs(P) + a * a * a),
+                "not the branch's state at abar", "lambda %.17g s %.17g: abar %.17g", lam, x, a);
     }
   }
   fz_done(f);
@@ -1263,7 +1264,7 @@ static void fuzz_maugis_dugdale(void)
   f = fz_new("dc_md_step");
   for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
     const double lam = A(U() < 0.9 ? fz_log(1e-4, 1e4) : fz_wild());
-    dc_md_contact h = {0.0, 0.0, 0.0, lam, 0.0};
+    dc_md_contact h = {0.0, 0.0, 0.0, lam, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double D = -dc_md_reach(isfinite(lam) && lam >= 1e-10 && lam <= 1e10 ? lam : 1.0) - U();
     for (int i = 0; i < 40; i++) {
       fz_call();
@@ -1303,7 +1304,7 @@ static void fuzz_maugis_dugdale(void)
   f = fz_new("dc_md_friction_load");
   for (long k = 0; k < N_CALLS / 1000 + 1; k++) {
     const double lam = A(U() < 0.9 ? fz_log(1e-10, 1e10) : fz_wild()), P = A(U() < 0.9 ? -2.0 + 10.0 * U() : fz_wild());
-    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, lam, 0.0};
+    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, lam, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     const double L = dc_md_friction_load(&h, P);
     f->calls++;
     const int dom = isfinite(lam) && lam >= 1e-10 && lam <= 1e10;

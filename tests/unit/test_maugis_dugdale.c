@@ -80,36 +80,55 @@ int main(void)
   CHECK(dc_md_state(1e-10, 1.5, &m, &P, &D) == DC_OK);
   CHECK_REL(P, 1.5 * 1.5 * 1.5 - 2.0, 1e-4, "lambda 1e-10: DMT force a^3 - 2 (Hertz less 2 pi w R)");
   CHECK_REL(D, 2.25, 1e-4, "lambda 1e-10: DMT overlap a^2 (Hertz)");
-  /* Newton from a nearby state (a DEM contact's previous step) against the reference
-     evaluation along an unloading path from Dbar 4 to 1 % of the separation overlap above it
-     (at the fold itself Newton may stop: DC_ENOCONV), 2000 steps, for lambda 0.1, 1, 10 */
+  /* the branch in s (the DEM path's variable) against the branch in abar: the same
+     forces and overlaps, dDbar/ds against central differences, and its fold at the
+     reference's separation overlap */
   {
-    double worst_n = 0.0;
-    int fails = 0, n = 0;
-    const double lams[] = {0.1, 1.0, 10.0};
-    for (int L = 0; L < 3; L++) {
-      double Ds, as, a, s, P, m, ar, Pr;
-      int contact;
-      CHECK(dc_md_separation(lams[L], &Ds, &as) == DC_OK);
-      CHECK(dc_md_at_overlap(lams[L], 4.0, &contact, &a, &m, &P) == DC_OK);
-      s = sqrt(m * m - 1.0);
-      for (int k = 1; k <= 2000; k++) {
-        const double D = 4.0 + (Ds - 0.01 * Ds - 4.0) * k / 2000.0;
-        if (dc_md_at_overlap_near(lams[L], D, a, s, &a, &s, &P) != DC_OK) { fails++; break; }
-        if (k % 97 == 0 || k == 2000) {
-          CHECK(dc_md_at_overlap(lams[L], D, &contact, &ar, &m, &Pr) == DC_OK && contact == 1);
-          worst_n = fmax(worst_n, fmax(fabs(a / ar - 1), fabs(P - Pr) / fmax(1.0, fabs(Pr))));
-          n++;
-        }
+    double worst_b = 0.0, worst_d = 0.0, worst_f = 0.0;
+    int n = 0;
+    const double lams[] = {0.01, 0.1, 0.5, 0.9, 1.0, 2.0, 10.0, 1000.0};
+    for (int L = 0; L < 8; L++) {
+      for (int k = 0; k <= 40; k++) {
+        const double x = pow(10.0, -4.0 + 0.2 * k);
+        double ab, Pb, Db, dD, m2, P2, D2;
+        CHECK(dc_md_branch_s(lams[L], x, &ab, &Pb, &Db, &dD) == DC_OK);
+        if (ab < 1e-20 || ab > 1e20) continue;
+        CHECK(dc_md_state(lams[L], ab, &m2, &P2, &D2) == DC_OK);
+        const double sc = ab * ab + 4.0 / 3.0 * lams[L] * ab * x;   /* MD3's terms */
+        /* s itself to 1e-8 (the abar solve holds s to 4 DBL_EPSILON absolute, loose where MD1 is flat, s < 1e-2) */
+        CHECK(fabs(sqrt((m2 - 1.0) * (m2 + 1.0)) / x - 1.0) < 1e-8);
+        worst_b = fmax(worst_b, fmax(fabs(P2 - Pb) / (fabs(Pb) + ab * ab * ab), fabs(D2 - Db) / sc));
+        double a1, P1, D1, d1, a3, P3, D3, d3;
+        const double hs = 1e-5 * x;
+        CHECK(dc_md_branch_s(lams[L], x - hs, &a1, &P1, &D1, &d1) == DC_OK);
+        CHECK(dc_md_branch_s(lams[L], x + hs, &a3, &P3, &D3, &d3) == DC_OK);
+        worst_d = fmax(worst_d, fabs((D3 - D1) / (2.0 * hs) - dD) * x / sc);
+        n++;
       }
+      /* the fold: the least Dbar over s against the reference's separation overlap */
+      double Ds, as, Dmin = HUGE_VAL;
+      CHECK(dc_md_separation(lams[L], &Ds, &as) == DC_OK);
+      dc_md_contact h = {DC_MD_APART, 0.0, 0.0, lams[L], 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+      double P, a;
+      CHECK(dc_md_step(5.0, &h, &P, &a) == DC_OK && h.phase == DC_MD_CONTACT);
+      for (int k = 0; k <= 4000; k++) {
+        double ab, Pb, Db, dD;
+        if (dc_md_branch_s(lams[L], pow(10.0, -3.0 + 0.002 * k), &ab, &Pb, &Db, &dD) == DC_OK) Dmin = fmin(Dmin, Db);
+      }
+      worst_f = fmax(worst_f, fabs(h.Dsep - Ds));
+      CHECK(h.Dsep <= Dmin + 1e-12);
+      CHECK((as > 1e-6) == (h.sfold > 0.0));   /* the reference's golden section ends within 1e-8 of the end */
     }
-    printf("  Newton from the previous step along unloading paths: %d compared, worst %.3g, %d failures\n", n, worst_n,
-           fails);
-    CHECK(fails == 0 && n == 63);
-    CHECK(worst_n < 1e-12);
-    double a, s, P;
-    CHECK(dc_md_at_overlap_near(1.0, 1.0, 0.0, 1.0, &a, &s, &P) == DC_EDOM);
-    CHECK(dc_md_at_overlap_near(1.0, NAN, 1.0, 1.0, &a, &s, &P) == DC_EDOM);
+    printf("  the branch in s: %d states against the branch in abar, worst %.3g; dDbar/ds against differences %.3g; "
+           "separation overlaps from the fold %.3g from the reference\n", n, worst_b, worst_d, worst_f);
+    CHECK(n > 250);
+    CHECK(worst_b < 1e-12);
+    CHECK(worst_d < 1e-8);
+    CHECK(worst_f < 1e-10);
+    double ab, Pb, Db, dD;
+    CHECK(dc_md_branch_s(1.0, 0.0, &ab, &Pb, &Db, &dD) == DC_EDOM);
+    CHECK(dc_md_branch_s(0.0, 1.0, &ab, &Pb, &Db, &dD) == DC_EDOM);
+    CHECK(dc_md_branch_s(1.0, NAN, &ab, &Pb, &Db, &dD) == DC_EDOM);
   }
   /* the pull-off force is monotonic in lambda between the limits */
   double prev = -2.0;
@@ -225,7 +244,7 @@ int main(void)
       dc_md_state_zero(l, &c0, &P0, &D0);
       const double cz = 8.0 * l / (3.0 * M_PI);
       const double Dlo = c0 > cz ? -0.5 * cz * cz - 2.0 / (M_PI * l) : Ds;
-      dc_md_contact h = {0.0, 0.0, 0.0, l, 0.0};
+      dc_md_contact h = {0.0, 0.0, 0.0, l, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
       const int steps = 4000;
       const double Dstart = -reach - 0.5, Dmax = 3.0, dD = (Dmax - Dstart) / steps;
       double first = NAN, last = NAN, prevD = NAN;
@@ -267,7 +286,7 @@ int main(void)
            "%.3g and ends %.3g steps from the model's overlaps\n", n, refs, worst, worst_in, worst_out);
     CHECK(worst < 1e-12);
     CHECK(worst_in < 1e-6 && worst_out < 1e-6);
-    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 0.0, 0.0};
+    dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     double P, a;
     CHECK(dc_md_step(1.0, &h, &P, &a) == DC_EDOM);
   }
@@ -294,7 +313,7 @@ int main(void)
         CHECK_REL(aa, v[2] * sa, 1e-9, "dc_md_sphere: contact radius at the csv's overlap");
         rows++;
       } else if (!strcmp(tag, "pulloff")) {
-        dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 1.0, 0.0};
+        dc_md_contact h = {DC_MD_CONTACT, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
         CHECK_REL(dc_md_friction_load(&h, 0.5), 0.5 - 2.0 * v[1], 1e-9, "friction load F + 2 |F_c|");
         rows++;
       }

@@ -84,18 +84,16 @@ int dc_md_separation(double lambda, double *Dbar_sep, double *abar_sep);
    DEM hot path. */
 int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, double *m, double *Pbar);
 
-/* The same state from a nearby one (a DEM contact's previous step): Newton
-   on MD1 and MD3 together in (abar, s), s = (m^2 - 1)^1/2, from the guess
-   (abar0, s0) with abar0 > 0, s0 >= 0, steps halved while they leave
-   a trust region (abar within a factor 4, s within 4 s + 1, s >= 0) or do
-   not reduce the residual; stops when both
-   residuals are below 4 DBL_EPSILON of their terms. *abar, *s, *Pbar on
-   DC_OK (the stable branch if the guess lies on it and Dbar is above the
-   separation overlap: the caller checks Dbar >= Dbar_sep); DC_ENOCONV
-   after 40 iterations, as near the separation overlap, where the branch
-   folds (outputs untouched: take dc_md_at_overlap); DC_EDOM
-   outside lambda's and abar's domain or for a guess outside it. */
-int dc_md_at_overlap_near(double lambda, double Dbar, double abar0, double s0, double *abar, double *s, double *Pbar);
+/* The contact branch at s = (m^2 - 1)^1/2 in (0, inf): explicit, since
+   MD1 is a quadratic in abar (A abar^2 + B abar = 1, A = (lambda/2)
+   [s + (s^2 - 1) arctan s], B = (4 lambda^2/3) [s arctan s - (1 + s^2)^1/2
+   + 1]): abar, Pbar (MD2), Dbar (MD3) and dDbar/ds. Dbar falls from +inf
+   as s -> 0 (large contacts) to the abar -> 0 end as s -> inf, through
+   the fold (its least value, the separation overlap) where lambda is
+   above about 0.93. DC_EDOM unless lambda lies in [1e-10, 1e10] and s in
+   [1e-30, 1e30]; DC_ERANGE if a result overflows. The DEM path
+   (dc_md_step) solves Dbar(s) = Dbar by Newton in s. */
+int dc_md_branch_s(double lambda, double s, double *abar, double *Pbar, double *Dbar, double *dDds);
 
 /* The zone-only states (no contact: a Dugdale zone r < c alone, the gap
    h0 at r = c; Johnson & Greenwood 1997): with the surfaces' approach
@@ -122,12 +120,17 @@ double dc_md_reach(double lambda);
 /* An overlap-controlled Maugis-Dugdale contact (a DEM contact's history):
    phase DC_MD_APART, DC_MD_ZONE (x = cbar) or DC_MD_CONTACT (x = abar,
    s = (m^2 - 1)^1/2), lambda of the pair, Pc the pull-off force under
-   load control (0 until dc_md_friction_load asks). Zeros: apart. */
+   load control (0 until dc_md_friction_load asks), Dsep and sfold the
+   separation overlap and the fold's s (0: no fold; both found as the
+   contact first enters the branch; Dsep 0: not yet), Dlast, slope and
+   curve the last overlap on the branch, dDbar/ds there and d^2 s/dDbar^2
+   from the last two steps (the next step's second-order predictor).
+   Zeros: apart. */
 enum { DC_MD_APART = 0, DC_MD_ZONE = 1, DC_MD_CONTACT = 2 };
 typedef struct {
-  double phase, x, s, lambda, Pc;
+  double phase, x, s, lambda, Pc, Dsep, sfold, Dlast, slope, curve;
 } dc_md_contact;
-#define DC_MD_CONTACT_NFIELDS 5
+#define DC_MD_CONTACT_NFIELDS 10
 extern const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS];   /* none flips */
 
 /* One step of the contact h at the overlap Dbar (Johnson & Greenwood's
@@ -135,13 +138,13 @@ extern const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS];   /* none fl
    the state jumps to the zone's stable state (if the zone is stable there)
    or to the contact branch; the zone's states until Dbar passes the
    branch end's Dbar0 (contact) or the zone's fold (apart); the stable
-   contact branch (Newton from the previous state, about 100 ns a step)
-   down to its separation overlap, then the zone or apart. *Pbar the force,
-   *abar the contact radius (0 unless in contact); h updated. The jumps
-   (into contact, out of it) take the reference (dc_md_at_overlap, about
-   0.1 ms) only where Newton from a JKR- or DMT-like guess fails.
-   DC_EDOM for h->lambda outside [1e-10, 1e10] or |Dbar| > 1e30;
-   DC_ENOCONV if the reference fails (h untouched on error). */
+   contact branch down to its separation overlap, then the zone or apart.
+   On the branch: Newton in s (dc_md_branch_s) from the previous state's
+   tangent, safeguarded by a bracket; the fold searched once per contact
+   (about 100 branch evaluations). *Pbar the force, *abar the contact
+   radius (0 unless in contact); h updated. DC_EDOM for h->lambda outside
+   [1e-10, 1e10] or |Dbar| > 1e30; DC_ENOCONV if the solve fails (h
+   untouched on error). */
 int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar);
 
 /* The load that bounds friction, F + 2 |F_c| with F_c the pull-off force
