@@ -444,19 +444,21 @@ int dc_md_sphere_pair_of(double Estar, double w, double z0, dc_md_sphere_pair *p
   return DC_OK;
 }
 
-int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a)
+/* One step in SI units for the sphere of radius R = r3^3: lambda set as
+   the contact leaves DC_MD_APART, the scales from r3 */
+static int md_si(const dc_md_sphere_pair *p, double r3, double delta, dc_md_contact *h, double *F, double *a)
 {
-  if (!(R > 0.0 && R <= DBL_MAX)) return DC_EDOM;
+  if (!(fabs(delta) <= DBL_MAX)) return DC_EDOM;
   dc_md_contact t = *h;
   if (t.phase == DC_MD_APART) {
     if (!(delta > -p->h0)) {
       *F = *a = 0.0;
       return DC_OK;
     }
-    t.lambda = p->Lam * cbrt(R);
-    t.Pc = 0.0;
+    const double l = p->Lam * r3;
+    if (l != t.lambda) t.Dsep = t.Pc = 0.0;   /* the fold and the pull-off of another lambda */
+    t.lambda = l;
   }
-  const double r3 = t.lambda / p->Lam;
   double P, ab;
   const int st = dc_md_step(delta / (p->Cd * r3), &t, &P, &ab);
   if (st != DC_OK) return st;
@@ -466,6 +468,20 @@ int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_conta
   *F = f;
   *a = rad;
   return DC_OK;
+}
+
+int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a)
+{
+  if (!(R > 0.0 && R <= DBL_MAX)) return DC_EDOM;
+  /* R is the pair's for the contact's life: its cube root from lambda once formed */
+  return md_si(p, h->phase == DC_MD_APART ? cbrt(R) : h->lambda / p->Lam, delta, h, F, a);
+}
+
+int dc_md_ellipse(const dc_md_sphere_pair *p, double R_major, double R_minor, double delta, dc_md_contact *h,
+                  double *F, double *a)
+{
+  if (!(R_major > 0.0 && R_major <= DBL_MAX && R_minor > 0.0 && R_minor <= DBL_MAX)) return DC_EDOM;
+  return md_si(p, cbrt(sqrt(R_major) * sqrt(R_minor)), delta, h, F, a);
 }
 
 double dc_dmt_pulloff(double R_major, double R_minor, double w)

@@ -15,9 +15,10 @@
                          weakly adhesive ones (small Tabor parameter): the
                          Hertz force less 2 pi w (R_major R_minor)^1/2 from
                          touch on, no neck; maugis: Maugis-Dugdale, the
-                         transition between them (spheres; its zone acts
-                         before touch and holds until the model's separation
-                         overlap); tabor: per contact the law its Tabor
+                         transition between them (its zone acts before touch
+                         and holds until the model's separation overlap;
+                         superquadrics: on the sphere of the Gaussian radius
+                         (R_major R_minor)^1/2); tabor: per contact the law its Tabor
                          parameter picks (JKR above 5, DMT below 0.1,
                          Maugis-Dugdale between; spheres) (dc/maugis_dugdale.h)
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
@@ -93,8 +94,8 @@ public:
   {
     DcNormalModel::postSettings(hsetup, c);
     if (law >= LAW_MD) {
-      if (atom->superquadric_flag)
-        stop(true, "adhesionLaw maugis and tabor are for spheres; superquadrics take adhesionLaw jkr or dmt");
+      if (law == LAW_TABOR && atom->superquadric_flag)
+        stop(true, "adhesionLaw tabor is for spheres; superquadrics take adhesionLaw jkr, dmt or maugis");
       for (int k = 0; k < DC_MD_CONTACT_NFIELDS; k++) {
         const int off = hsetup->add_history_value(dc_md_history[k].name, dc_md_history[k].flips ? "1" : "0");
         if (k == 0) md_offset = off;
@@ -179,9 +180,17 @@ public:
     if (lw == LAW_MD) {
       /* apart: most pairs handed here are beyond the zone's reach h0 */
       const dc_md_contact *h = reinterpret_cast<const dc_md_contact *>(&sidata.contact_history[md_offset]);
-      const double reach = sidata.radsum + md[sidata.itype * (ntypes_ + 1) + sidata.jtype].h0;
-      if (h->phase == DC_MD_APART && !sidata.is_wall && sidata.rsq >= reach * reach) return release(scdata);
-      delta = closeSphereContact(scdata, vn);
+      const double h0 = md[sidata.itype * (ntypes_ + 1) + sidata.jtype].h0, reach = sidata.radsum + h0;
+#ifdef SUPERQUADRIC_ACTIVE_FLAG
+      if (atom->superquadric_flag) {
+        if (!gap.closeOverlap(lmp, sidata, h->phase == DC_MD_APART ? h0 : sidata.radsum, delta, vn))
+          return release(scdata);
+      } else
+#endif
+      {
+        if (h->phase == DC_MD_APART && !sidata.is_wall && sidata.rsq >= reach * reach) return release(scdata);
+        delta = closeSphereContact(scdata, vn);
+      }
       if (!mdForce(sidata, delta, vn, i_forces, j_forces)) return release(scdata);
       if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
       sidata.has_force_update = true;
@@ -313,32 +322,38 @@ private:
     return of_tabor[dc_md_tabor_law(&md[k], sphereEffectiveRadius(d))];
   }
 
-  /* Maugis-Dugdale (spheres) at overlap delta: false (nothing applied)
-     when the contact is apart. Damping on the punch stiffness 2 E* a
-     (none while only the zone acts). */
+  /* Maugis-Dugdale at overlap delta (superquadrics: the sphere of the
+     Gaussian radius, dc_md_ellipse): false (nothing applied) when the
+     contact is apart. Damping on the punch stiffness 2 E* a (none while
+     only the zone acts). */
   bool mdForce(SurfacesIntersectData &sidata, double delta, double vn, ForceData &i_forces, ForceData &j_forces)
   {
     const int itype = sidata.itype, jtype = sidata.jtype;
     const dc_md_sphere_pair &p = md[itype * (ntypes_ + 1) + jtype];
     dc_md_contact *h = reinterpret_cast<dc_md_contact *>(&sidata.contact_history[md_offset]);
     const bool forming = h->phase == DC_MD_APART;
-    const double R = sphereEffectiveRadius(sidata);
-    double F, a;
-    const int st = dc_md_sphere(&p, R, delta, h, &F, &a);
-    if (st != DC_OK) fail("Maugis-Dugdale contact", delta, R, R, work[itype][jtype], Yeff[itype][jtype], st);
+    double R = sphereEffectiveRadius(sidata), R_minor = R, F, a;
+    int st;
+    if (superquadric(sidata)) {
+      relativeRadii(sidata, R, R_minor, NULL);
+      st = dc_md_ellipse(&p, R, R_minor, delta, h, &F, &a);
+    } else {
+      st = dc_md_sphere(&p, R, delta, h, &F, &a);
+    }
+    if (st != DC_OK) fail("Maugis-Dugdale contact", delta, R, R_minor, work[itype][jtype], Yeff[itype][jtype], st);
     if (h->phase == DC_MD_APART) return false;
     if (forming) checkReach(sidata, dc_md_reach(h->lambda) * p.Cd * (h->lambda / p.Lam), whyReach(), work[itype][jtype]);
     double kn = 0.0, kt = 0.0;
     if (a > 0.0) {
       kn = dc_punch_stiffness_circle(Yeff[itype][jtype], a);
       kt = dc_mindlin_kt_circle(Geff[itype][jtype], a);
-      checkHertzRange(sidata, a * a, R);
+      checkHertzRange(sidata, a * a, R_minor);
     }
     applyForce(sidata, F, delta, vn, kn, kn, kt, i_forces, j_forces);
     double axis[3];
     double *ax = axisWanted(axis);
     if (ax) {
-      const double sF = p.piw * R;
+      const double r3 = h->lambda / p.Lam, sF = p.piw * r3 * r3 * r3;
       dc_contact c = {F, kn, M_PI * a * a, a, a, 0.0, a > 0.0};
       if (a > 0.0) c.F_bound = dc_md_friction_load(h, F / sF) * sF;
       if (!(c.F_bound >= 0.0)) fail("Maugis-Dugdale pull-off force", delta, R, R, work[itype][jtype], Yeff[itype][jtype], DC_ENOCONV);

@@ -16,7 +16,7 @@ summits resumed from a restart with too small a contact distance;
 cohesion gw_adhesion without the normal model it adds to (gw_rough
 gwElliptic on); cmd_tangential's tangentialRoughness without gw_rough or
 with cmdTwisting; an unknown adhesionLaw; adhesionLaw maugis without
-equilibriumSeparation, with it 0, on superquadrics; jamari_ep under
+equilibriumSeparation, with it 0; adhesionLaw tabor on superquadrics; jamari_ep under
 LIGGGHTS' sjkr with a cohesive pressure the plastic contact cannot carry.
 Usage: check_deck_errors.py WORKDIR"""
 import os
@@ -48,7 +48,7 @@ cases = [
     ("unknown adhesionLaw", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_jkr"), settings="adhesionLaw bradley"), "(options: dmt jkr maugis tabor"),
     ("adhesionLaw maugis without equilibriumSeparation", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_jkr"), settings="adhesionLaw maugis"), "equilibriumSeparation"),
     ("equilibriumSeparation 0", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_md_zero"), settings="adhesionLaw tabor"), "Normal model jkr_elliptic: equilibriumSeparation = 0 for types 1 and 1 is outside (0, inf) m"),
-    ("adhesionLaw maugis on superquadrics", "../superquadric_pulloff/in.superquadric_pulloff", {"alaw": "maugis", "w": 0.5, "omega": 0.0}, "Normal model jkr_elliptic: adhesionLaw maugis and tabor are for spheres; superquadrics take adhesionLaw jkr or dmt"),
+    ("adhesionLaw tabor on superquadrics", "../superquadric_pulloff/in.superquadric_pulloff", {"alaw": "tabor", "w": 0.5, "omega": 0.0}, "Normal model jkr_elliptic: adhesionLaw tabor is for spheres; superquadrics take adhesionLaw jkr, dmt or maugis"),
     ("missing workOfAdhesion", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="tangential_damping on"), "workOfAdhesion"),
     ("limitForce on an adhesive model", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", settings="limitForce on"), "Normal model jkr_elliptic: 'limitForce on' is not available"),
     ("superquadrics without surface superquadric", "in.superquadric_no_surface", {"props": props("props_full")}, "needs 'surface superquadric'"),

@@ -24,14 +24,19 @@ of the curve, or apart. Checks:
   in the cycle's forces);
 - adhesionLaw tabor picks JKR (Tabor 32), DMT (0.03) and Maugis-Dugdale
   (3.2) as the runs with those laws named, bit for bit;
-- 2 MPI ranks equal 1 rank.
+- superquadrics (inputs/superquadric_pulloff with adhesionLaw maugis: an
+  ellipsoid tip off a wall, two tips off each other, the second turned by
+  30 degrees): the law of the sphere of the Gaussian radius (R_major
+  R_minor)^1/2 of the tips' relative radii (review Eqs. 3-4), the same
+  checks of force and separation;
+- 2 MPI ranks equal 1 rank (spheres and superquadrics).
 Usage: check_maugis_contact.py WORKDIR"""
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import compare_tables, run, start, table
+from regress import compare_tables, relative_radii, run, start, table
 
 work, _, c = start()
 E, nu, w, r, rho = 5e6, 0.3, 0.5, 1e-3, 2500.0
@@ -192,16 +197,29 @@ go("zone_np2", ranks=2, z0=1e-5)
 go("fold", z0=1e-6, v=1.25 * cases[1e-6])
 go("fold_stick", z0=1e-6, v=0.8 * cases[1e-6])
 go("tabor_md", alaw="tabor", z0=1e-6, v=1.25 * cases[1e-6])
+for name, ranks in (("sq", 1), ("sq_np2", 2)):
+    d = os.path.join(work, name)
+    run("superquadric_pulloff/in.superquadric_pulloff", d, ranks=ranks, tag=name,
+        variables={"alaw": "maugis", "w": w, "omega": 30.0, "z0": 1e-6, "steps": 6000})
+    runs[name] = table(os.path.join(d, "pulloff.txt"))
 for law in ("jkr", "dmt"):
     z0 = 1e-7 if law == "jkr" else 1e-4
     go("tabor_" + law, alaw="tabor", z0=z0)
     go(law, alaw=law, z0=z0)
 
 # the prescribed cycles against the independent solution
-for name, z0 in (("zone", 1e-5), ("fold", 1e-6)):
+a1, b1, c1 = 0.001, 0.0006, 0.0015     # superquadric_pulloff's ellipsoids: atom 1, c axis down
+a2, b2, c2 = 0.0015, 0.0006, 0.001     # atoms 2 and 3, a axis along x, atom 3 turned by 30 degrees
+Rp = relative_radii(a2 / b2 ** 2, a2 / c2 ** 2, a2 / b2 ** 2, a2 / c2 ** 2, math.radians(30.0))
+for name, z0 in (("zone", 1e-5), ("fold", 1e-6), ("sq", 1e-6)):
     rows = runs[name]
-    for what, R, overlap, force in (("sphere-wall", r, lambda q: r - q[1], lambda q: q[2]),
-                                    ("sphere-sphere", r / 2, lambda q: 2 * r - (q[4] - q[3]), lambda q: -q[5])):
+    if name == "sq":
+        cases_here = (("ellipsoid-wall", math.sqrt(a1 * a1 / c1 * b1 * b1 / c1), lambda q: c1 - q[1], lambda q: q[2]),
+                      ("ellipsoid-ellipsoid", math.sqrt(Rp[0] * Rp[1]), lambda q: 2 * a2 - (q[4] - q[3]), lambda q: -q[5]))
+    else:
+        cases_here = (("sphere-wall", r, lambda q: r - q[1], lambda q: q[2]),
+                      ("sphere-sphere", r / 2, lambda q: 2 * r - (q[4] - q[3]), lambda q: -q[5]))
+    for what, R, overlap, force in cases_here:
         md = MD(R, z0)
         Ds = [overlap(q) / md.sd for q in rows]
         on = [i for i in range(1, len(rows)) if (force(rows[i]) == 0.0) != (force(rows[i - 1]) == 0.0)]
@@ -225,9 +243,10 @@ for name, z0 in (("zone", 1e-5), ("fold", 1e-6)):
         step = 2e-9 / md.sd
         D_first, D_last = Ds[att[0]], Ds[att[-1]]
         D_in = -2 / (math.pi * md.lam)
-        c.true(D_in <= D_first < D_in + step * 1.01 and Ds[att[0] - 1] < D_in,
-               "%s %s: the zone reaches across at the approach overlap -h0 = %.6g m (first force at %.6g m)"
-               % (name, what, D_in * md.sd, D_first * md.sd))
+        if name != "sq":   # the superquadrics start pressed together
+            c.true(D_in <= D_first < D_in + step * 1.01 and Ds[att[0] - 1] < D_in,
+                   "%s %s: the zone reaches across at the approach overlap -h0 = %.6g m (first force at %.6g m)"
+                   % (name, what, D_in * md.sd, D_first * md.sd))
         k = min(range(len(md.t) - 1), key=lambda j: md.D[j])
         t_sep, D_sep = md.fold(k)
         c.true(D_sep <= D_last < D_sep + step * 1.01 and Ds[att[-1] + 1] < D_sep,
@@ -235,7 +254,7 @@ for name, z0 in (("zone", 1e-5), ("fold", 1e-6)):
                % (name, what, D_sep * md.sd, "the zone's fold" if t_sep <= md.c0 else "the contact's fold",
                   D_last * md.sd))
 
-    if name == "zone":
+    if name != "fold":
         continue
     # the collision: rebound at 1.25 v_s
     vs = cases[z0]
@@ -247,7 +266,8 @@ stick = runs["fold_stick"][-1]
 md = MD(r / 2, 1e-6)
 gap = stick[7] - stick[6] - 2 * r
 c.true(stick[10] != 0.0 and gap < md.sd, "at 0.8 v_s the spheres stick: gap %.3g m, force %.3g N" % (gap, stick[10]))
-compare_tables(c, runs["zone_np2"], runs["zone"], 1e-13, "2 ranks equal 1 rank")
+compare_tables(c, runs["zone_np2"], runs["zone"], 1e-13, "spheres: 2 ranks equal 1 rank")
+compare_tables(c, runs["sq_np2"], runs["sq"], 1e-13, "superquadrics: 2 ranks equal 1 rank")
 compare_tables(c, runs["tabor_md"], runs["fold"], 0.0, "tabor at Tabor 3.2 and 2.5: Maugis-Dugdale")
 compare_tables(c, runs["tabor_jkr"], runs["jkr"], 0.0, "tabor at Tabor 32 and 25: JKR")
 compare_tables(c, runs["tabor_dmt"], runs["dmt"], 0.0, "tabor at Tabor 0.032 and 0.025: DMT")

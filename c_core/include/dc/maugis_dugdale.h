@@ -181,10 +181,23 @@ static inline int dc_md_tabor_law(const dc_md_sphere_pair *p, double R)
 /* A sphere contact of effective radius R [m] at overlap delta [m]: one
    dc_md_step in SI units. *F [N] and *a [m]; h's lambda set as the
    contact leaves DC_MD_APART (R is the pair's for the contact's life).
-   Apart with delta <= -h0: nothing computed. DC_EDOM for R <= 0 or a
-   lambda outside [1e-10, 1e10], DC_ERANGE if F overflows (h untouched),
-   else dc_md_step's status. */
+   Apart with delta <= -h0: nothing computed. DC_EDOM for R <= 0, a
+   non-finite delta or a lambda outside [1e-10, 1e10], DC_ERANGE if F
+   overflows (h untouched), else dc_md_step's status. */
 int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a);
+
+/* An elliptic contact (superquadrics) of relative principal radii
+   R_major, R_minor: dc_md_sphere on the sphere of the Gaussian radius
+   R_e = (R_major R_minor)^1/2, the scales from the current R_e, lambda
+   from R_e as the contact forms (kept for its life). Assumptions: the
+   contact and the Dugdale zone are circles (the law of a sphere of equal
+   Gaussian curvature); it is exact in DMT's adhesion (lambda -> 0: the
+   attraction 2 pi w (R_major R_minor)^1/2 of dc_dmt_pulloff) and carries
+   the one-radius error of Hertz's elastic part and, as lambda grows, of
+   JKR's against the elliptic theory (doc/adhesion_tabor.md gives both).
+   DC_EDOM for radii outside (0, DBL_MAX], else as dc_md_sphere. */
+int dc_md_ellipse(const dc_md_sphere_pair *p, double R_major, double R_minor, double delta, dc_md_contact *h,
+                  double *F, double *a);
 
 /* DMT (the lambda -> 0 limit) of an elliptic Hertz contact, relative
    principal radii R_major, R_minor: the adhesive force of the rigid gap
