@@ -281,7 +281,11 @@ static int md_solve(double lambda, double D, double sf, double s0, double *s, md
   for (int it = 0; it < 200; it++) {
     md_at_s(lambda, x, &p);
     const double r = p.D - D;
-    if (!isfinite(r)) return DC_ENOCONV;
+    if (!(isfinite(r) && isfinite(p.dD))) {   /* beyond the doubles (s too large): back inside the bracket */
+      hi = x;
+      x = lo > 0.0 ? sqrt(lo * hi) : 0.25 * hi;
+      continue;
+    }
     const double dx = p.dD < 0.0 ? -r / p.dD : HUGE_VAL;
     if (fabs(dx) <= 1e-7 * x) {
       *s = x + dx;
@@ -388,8 +392,10 @@ int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar)
   if (t.phase == DC_MD_CONTACT) {
     if (Dbar >= t.Dsep) {
       /* the previous state and the tangent there: a first-order predictor */
-      const double dD = Dbar - t.Dlast, s1 = t.s + dD / t.slope + 0.5 * t.curve * dD * dD;
-      st = md_contact(Dbar, &t, s1 > 0.0 ? s1 : 0.25 * t.s, Pbar, abar);
+      /* the second-order term where it is the smaller */
+      const double dD = Dbar - t.Dlast, lin = dD / t.slope, quad = 0.5 * t.curve * dD * dD;
+      const double s1 = t.s + lin + (fabs(quad) <= fabs(lin) ? quad : 0.0);
+      st = md_contact(Dbar, &t, s1 > 0.0 && s1 <= DBL_MAX ? s1 : 0.25 * t.s, Pbar, abar);
     } else {
       md_zone_or_apart(Dbar, &t, Pbar, abar);
     }

@@ -1279,6 +1279,7 @@ static void fuzz_maugis_dugdale(void)
                UNTOUCHED(P) && UNTOUCHED(a) && !memcmp(&h, &h0, sizeof h),
                ALLFIN(P, a, h.x, h.s) && a >= 0.0 && (h.phase == DC_MD_APART || h.phase == DC_MD_ZONE || h.phase == DC_MD_CONTACT),
                "lambda %.17g Dbar %.17g step %d", lam, D, i);
+      FZ_EXPECT(f, st != DC_ENOCONV, "no convergence in the domain", "lambda %.17g Dbar %.17g step %d", lam, D, i);
       if (st != DC_OK) {
         h = h0;
         if (!isfinite(D) || fabs(D) > 1e30) D = 0.0;
