@@ -483,11 +483,11 @@ int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_conta
   return md_si(p, h->phase == DC_MD_APART ? cbrt(R) : h->lambda / p->Lam, delta, h, F, a);
 }
 
-int dc_md_ellipse(const dc_md_sphere_pair *p, double R_major, double R_minor, double delta, dc_md_contact *h,
-                  double *F, double *a)
+int dc_md_ellipse(const dc_md_sphere_pair *p, const dc_hertz_geom *g, double delta, dc_md_contact *h, double *F,
+                  double *a)
 {
-  if (!(R_major > 0.0 && R_major <= DBL_MAX && R_minor > 0.0 && R_minor <= DBL_MAX)) return DC_EDOM;
-  return md_si(p, cbrt(sqrt(R_major) * sqrt(R_minor)), delta, h, F, a);
+  if (!(g->R_force > 0.0 && g->R_force <= DBL_MAX)) return DC_EDOM;
+  return md_si(p, cbrt(g->R_force), delta, h, F, a);
 }
 
 double dc_dmt_pulloff(double R_major, double R_minor, double w)

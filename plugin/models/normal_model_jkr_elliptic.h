@@ -17,8 +17,8 @@
                          touch on, no neck; maugis: Maugis-Dugdale, the
                          transition between them (its zone acts before touch
                          and holds until the model's separation overlap;
-                         superquadrics: on the sphere of the Gaussian radius
-                         (R_major R_minor)^1/2); tabor: per contact the law its Tabor
+                         superquadrics: on the sphere of elliptic Hertz's
+                         force radius); tabor: per contact the law its Tabor
                          parameter picks (JKR above 5, DMT below 0.1,
                          Maugis-Dugdale between; spheres) (dc/maugis_dugdale.h)
    Properties: youngsModulus, poissonsRatio, coefficientRestitution (or
@@ -322,8 +322,8 @@ private:
     return of_tabor[dc_md_tabor_law(&md[k], sphereEffectiveRadius(d))];
   }
 
-  /* Maugis-Dugdale at overlap delta (superquadrics: the sphere of the
-     Gaussian radius, dc_md_ellipse): false (nothing applied) when the
+  /* Maugis-Dugdale at overlap delta (superquadrics: the sphere of elliptic
+     Hertz's force radius, dc_md_ellipse): false (nothing applied) when the
      contact is apart. Damping on the punch stiffness 2 E* a (none while
      only the zone acts). */
   bool mdForce(SurfacesIntersectData &sidata, double delta, double vn, ForceData &i_forces, ForceData &j_forces)
@@ -335,8 +335,10 @@ private:
     double R = sphereEffectiveRadius(sidata), R_minor = R, F, a;
     int st;
     if (superquadric(sidata)) {
+      dc_hertz_geom g;
       relativeRadii(sidata, R, R_minor, NULL);
-      st = dc_md_ellipse(&p, R, R_minor, delta, h, &F, &a);
+      st = dc_hertz_geometry(R, R_minor, &g);
+      if (st == DC_OK) st = dc_md_ellipse(&p, &g, delta, h, &F, &a);
     } else {
       st = dc_md_sphere(&p, R, delta, h, &F, &a);
     }

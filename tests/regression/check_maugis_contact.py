@@ -26,9 +26,9 @@ of the curve, or apart. Checks:
   (3.2) as the runs with those laws named, bit for bit;
 - superquadrics (inputs/superquadric_pulloff with adhesionLaw maugis: an
   ellipsoid tip off a wall, two tips off each other, the second turned by
-  30 degrees): the law of the sphere of the Gaussian radius (R_major
-  R_minor)^1/2 of the tips' relative radii (review Eqs. 3-4), the same
-  checks of force and separation;
+  30 degrees): the law of the sphere of elliptic Hertz's force radius
+  R_force = Rc gamma^2 (review Eqs. 5, 11, 13, evaluated here) of the tips'
+  relative radii (review Eqs. 3-4), the same checks of force and separation;
 - 2 MPI ranks equal 1 rank (spheres and superquadrics).
 Usage: check_maugis_contact.py WORKDIR"""
 import math
@@ -36,7 +36,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import compare_tables, relative_radii, run, start, table
+from regress import compare_tables, elliptic_hertz, relative_radii, run, start, table
 
 work, _, c = start()
 E, nu, w, r, rho = 5e6, 0.3, 0.5, 1e-3, 2500.0
@@ -214,8 +214,9 @@ Rp = relative_radii(a2 / b2 ** 2, a2 / c2 ** 2, a2 / b2 ** 2, a2 / c2 ** 2, math
 for name, z0 in (("zone", 1e-5), ("fold", 1e-6), ("sq", 1e-6)):
     rows = runs[name]
     if name == "sq":
-        cases_here = (("ellipsoid-wall", math.sqrt(a1 * a1 / c1 * b1 * b1 / c1), lambda q: c1 - q[1], lambda q: q[2]),
-                      ("ellipsoid-ellipsoid", math.sqrt(Rp[0] * Rp[1]), lambda q: 2 * a2 - (q[4] - q[3]), lambda q: -q[5]))
+        R_force = lambda R1, R2: elliptic_hertz(R1, R2)[0] * elliptic_hertz(R1, R2)[1] ** 2
+        cases_here = (("ellipsoid-wall", R_force(a1 * a1 / c1, b1 * b1 / c1), lambda q: c1 - q[1], lambda q: q[2]),
+                      ("ellipsoid-ellipsoid", R_force(*Rp), lambda q: 2 * a2 - (q[4] - q[3]), lambda q: -q[5]))
     else:
         cases_here = (("sphere-wall", r, lambda q: r - q[1], lambda q: q[2]),
                       ("sphere-sphere", r / 2, lambda q: 2 * r - (q[4] - q[3]), lambda q: -q[5]))

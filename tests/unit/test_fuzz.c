@@ -1360,7 +1360,7 @@ static void fuzz_maugis_dugdale(void)
   fz_done(fl);
   fz_done(fp);
   fz_done(f);
-  /* ellipses: the sphere of the Gaussian radius; radii outside (0, DBL_MAX] refused */
+  /* ellipses: the sphere of elliptic Hertz's force radius; R_force outside (0, DBL_MAX] refused */
   f = fz_new("dc_md_ellipse");
   {
     dc_md_sphere_pair p;
@@ -1368,22 +1368,25 @@ static void fuzz_maugis_dugdale(void)
     dc_md_sphere_pair_of(1e9, 0.05, 4e-10, &p, &err);
     for (long k = 0; k < N_CALLS / 100 + 1; k++) {
       fz_call();
-      const double R1 = A(U() < 0.8 ? fz_log(1e-7, 1.0) : fz_wild()), R2 = A(U() < 0.8 ? fz_log(1e-7, 1.0) : fz_wild());
+      const double R1 = fz_log(1e-7, 1.0), R2 = fz_log(1e-7, 1.0);
       const double d = A(U() < 0.8 ? fz_sign(fz_log(1e-12, 1e-3)) : fz_wild());
-      const int bad = !ALLFIN(R1, R2, d) || !(R1 > 0.0 && R2 > 0.0);
+      dc_hertz_geom g;
+      if (dc_hertz_geometry(R1 > R2 ? R1 : R2, R1 > R2 ? R2 : R1, &g) != DC_OK) continue;
+      if (U() < 0.1) g.R_force = A(fz_wild());
+      const int bad = !ALLFIN(d, g.R_force) || !(g.R_force > 0.0);
       dc_md_contact h = {0}, h0 = {0};
       double F, a;
       SENTINEL(F);
       SENTINEL(a);
-      const int st = dc_md_ellipse(&p, R1, R2, d, &h, &F, &a);
+      const int st = dc_md_ellipse(&p, &g, d, &h, &F, &a);
       FZ_CHECK(f, st, bad, 0, UNTOUCHED(F) && UNTOUCHED(a) && !memcmp(&h, &h0, sizeof h), ALLFIN(F, a) && a >= 0.0,
-               "R_major %.17g R_minor %.17g delta %.17g", R1, R2, d);
-      if (st != DC_OK || !(R1 * R2 >= DBL_MIN && R1 * R2 <= DBL_MAX)) continue;
+               "R_force %.17g delta %.17g", g.R_force, d);
+      if (st != DC_OK) continue;
       dc_md_contact hs = {0};
       double Fs, as_;
-      FZ_EXPECT(f, dc_md_sphere(&p, sqrt(R1 * R2), d, &hs, &Fs, &as_) == DC_OK && hs.phase == h.phase &&
-                       fabs(Fs - F) <= 1e-12 * (fabs(Fs) + p.piw * sqrt(R1 * R2)),
-                "not the sphere of the Gaussian radius", "R_major %.17g R_minor %.17g delta %.17g", R1, R2, d);
+      FZ_EXPECT(f, dc_md_sphere(&p, g.R_force, d, &hs, &Fs, &as_) == DC_OK && hs.phase == h.phase &&
+                       fabs(Fs - F) <= 1e-12 * (fabs(Fs) + p.piw * g.R_force),
+                "not the sphere of R_force", "R_force %.17g delta %.17g", g.R_force, d);
     }
   }
   fz_done(f);

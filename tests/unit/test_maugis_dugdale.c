@@ -328,23 +328,35 @@ int main(void)
     /* an ellipse of equal radii is the sphere (to rounding: its cube root is taken each step) */
     {
       dc_md_contact hs = {0}, he = {0};
+      dc_hertz_geom gc, ge;
       double worst_e = 0.0;
+      CHECK(dc_hertz_geometry(R, R, &gc) == DC_OK);
       for (int k = 0; k <= 400; k++) {
         const double d = (k <= 200 ? -1.0 + 0.02 * k : 3.0 - 0.025 * (k - 200)) * sd;
         double Fs, as_, Fe, ae;
-        CHECK(dc_md_sphere(&p, R, d, &hs, &Fs, &as_) == DC_OK && dc_md_ellipse(&p, R, R, d, &he, &Fe, &ae) == DC_OK);
+        CHECK(dc_md_sphere(&p, R, d, &hs, &Fs, &as_) == DC_OK && dc_md_ellipse(&p, &gc, d, &he, &Fe, &ae) == DC_OK);
         CHECK(hs.phase == he.phase);
         worst_e = fmax(worst_e, fabs(Fe - Fs) / sF);
       }
       printf("  dc_md_ellipse with equal radii against dc_md_sphere along a cycle: worst %.3g of pi w R\n", worst_e);
       CHECK(worst_e < 1e-12);
-      /* the Gaussian radius: R_major 4 R, R_minor R/4 is the sphere of R */
+      /* an ellipse: the sphere of its Hertz force radius, so that it carries elliptic Hertz's force as the load grows */
       dc_md_contact h2 = {0}, h3 = {0};
       double F2, a2, F3, a3;
-      CHECK(dc_md_ellipse(&p, 4.0 * R, 0.25 * R, 0.5 * sd, &h2, &F2, &a2) == DC_OK);
-      CHECK(dc_md_sphere(&p, R, 0.5 * sd, &h3, &F3, &a3) == DC_OK);
-      CHECK_REL(F2, F3, 1e-13, "dc_md_ellipse: the sphere of the Gaussian radius");
-      CHECK(dc_md_ellipse(&p, 0.0, R, 0.0, &h2, &F2, &a2) == DC_EDOM);
+      CHECK(dc_hertz_geometry(4.0 * R, 0.25 * R, &ge) == DC_OK);
+      CHECK(dc_md_ellipse(&p, &ge, 0.5 * sd, &h2, &F2, &a2) == DC_OK);
+      CHECK(dc_md_sphere(&p, ge.R_force, 0.5 * sd, &h3, &F3, &a3) == DC_OK);
+      CHECK_REL(F2, F3, 1e-13, "dc_md_ellipse: the sphere of R_force");
+      dc_hertz_state hz;
+      dc_md_contact h4 = {0};
+      double dbig = 1e4 * sd, Fb, ab;
+      CHECK(dc_md_ellipse(&p, &ge, dbig, &h4, &Fb, &ab) == DC_OK);
+      CHECK(dc_hertz_contact(&ge, E, dbig, &hz) == DC_OK);
+      /* at 1e4 overlap scales: elliptic Hertz's force less the adhesion, which tends to pi w R_force (JKR: its
+         Hertz force at the same overlap is F + pi w R to second order in the neck's overlap) and 2 pi w R_force (DMT) */
+      CHECK(hz.F - Fb >= M_PI * w * ge.R_force && hz.F - Fb <= 2.0 * M_PI * w * ge.R_force);
+      ge.R_force = 0.0;
+      CHECK(dc_md_ellipse(&p, &ge, 0.0, &h2, &F2, &a2) == DC_EDOM);
     }
     /* Tabor: JKR above 5, DMT below 0.1 */
     CHECK_REL(p.Lam * cbrt(p.R_jkr), dc_md_lambda_of_tabor(5.0), 1e-14, "lambda at R_jkr: Tabor 5");
