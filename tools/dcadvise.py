@@ -500,6 +500,8 @@ def report_costs():
     pick = {"hertz_elliptic": ("superquadric", "hertz_elliptic (exact)"),
             "gw_rough": ("rough", "tabulated GW law (gw_rough default)"),
             "jkr_elliptic": ("adhesion", "jkr_elliptic (hint carried)"),
+            "jkr_elliptic adhesionLaw dmt": ("adhesion", "adhesionLaw dmt (DMT)"),
+            "jkr_elliptic adhesionLaw maugis": ("adhesion", "adhesionLaw maugis (Maugis-Dugdale)"),
             "cmd_tangential": ("tangential", "cmd_tangential"),
             "tangential history": ("tangential", "stock tangential history")}
     return {m: cost.get(k) for m, k in pick.items()}
@@ -615,19 +617,22 @@ def advise(deck, opts, out):
             need = "elastic law"
             sticks = v < m["v_stick"]
             dmt = tab < 0.1
+            md = 0.1 <= tab < 5
             if po_w > tol or m["pulloff_over_F_max"] > tol or sticks:
                 need = ("jkr_elliptic adhesionLaw dmt" if dmt else "jkr_elliptic" if tab >= 5 else
-                        "jkr_elliptic (Tabor %s: between JKR and DMT; dclaw maugis gives the pull-off between "
-                        "JKR's 3/2 and DMT's 2 pi w R)" % fmt(tab))
+                        "jkr_elliptic adhesionLaw maugis (Tabor %s: between JKR and DMT)" % fmt(tab))
             R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force; sticking speed %s m/s "
               "(impact %s of it: %s)" % (fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"]),
                                          fmt(m["v_stick"]), fmt(v / m["v_stick"]), "sticks" if sticks else "rebounds"),
               need,
-              cost("jkr_elliptic") if need != "elastic law" else "1x",
-              "model jkr_elliptic%s; fix ... property/global workOfAdhesion peratomtypepair ..."
-              % (" adhesionLaw dmt" if dmt else "") if need != "elastic law" else "-")
+              cost("jkr_elliptic adhesionLaw dmt" if dmt else "jkr_elliptic adhesionLaw maugis" if md else "jkr_elliptic")
+              if need != "elastic law" else "1x",
+              "model jkr_elliptic%s; fix ... property/global workOfAdhesion peratomtypepair ...%s"
+              % (" adhesionLaw dmt" if dmt else " adhesionLaw maugis" if md else "",
+                 "; fix ... property/global equilibriumSeparation peratomtypepair ... (z0 %s m)" % fmt(opts.z0) if md else "")
+              if need != "elastic law" else "-")
             if need != "elastic law" and not dmt:   # a DMT contact ends at touch: no neck to reach
-                cdf_need.append(1.0 + m["jkr_separation"] / reach_R)
+                cdf_need.append(1.0 + (m["md_reach"] if md else m["jkr_separation"]) / reach_R)
         else:
             R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
         # roughness
@@ -667,7 +672,8 @@ def advise(deck, opts, out):
             R("rolling", "no friction: no creep forces", "-", "-", "-")
         # models acting apart: the contact distance they need (the set-up refuses less)
         models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}
-        for law, gap, on in (("jkr_elliptic", m["jkr_separation"], w > 0), ("gw_rough", m["rough_reach"], sigma > 0)):
+        jkr_gap = max(m["jkr_separation"], m["md_reach"]) if models & {"maugis", "tabor"} else m["jkr_separation"]
+        for law, gap, on in (("jkr_elliptic", jkr_gap, w > 0), ("gw_rough", m["rough_reach"], sigma > 0)):
             need_cdf = 1.0 + gap / reach_R
             m["contact_distance_factor_" + law] = need_cdf
             if on and law in models and deck.cdf[0] < need_cdf:

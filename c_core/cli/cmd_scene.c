@@ -14,6 +14,7 @@
 #include "dc/gw_rough.h"
 #include "dc/jamari_ep.h"
 #include "dc/jkr_sphere.h"
+#include "dc/maugis_dugdale.h"
 #include "dc/mindlin.h"
 #include "dc/rolling_kalker.h"
 #include "dc/scene.h"
@@ -235,6 +236,9 @@ static int cmd_scene(int argc, char **argv)
   /* how far apart the models act: JKR until delta_break, the rough law from its reach */
   const double jkr_break = w > 0.0 ? -dc_jkr_sphere_delta_break(R, Estar, w) : 0.0;
   const double rough_reach = -dc_gw_sphere_reach(DC_GW_SPHERE_TABULATED) * sigma;
+  /* Maugis-Dugdale (lambda from the Tabor parameter) acts from and to dc_md_reach overlap scales apart */
+  const double lam = dc_md_lambda_of_tabor(tabor), K = 4.0 / 3.0 * Estar;
+  const double md_reach = w > 0.0 && lam >= 1e-10 && lam <= 1e10 ? dc_md_reach(lam) * cbrt(M_PI * M_PI * w * w * R / (K * K)) : 0.0;
   /* roughness: the rough-sphere law (tabulated GW, dc/gw_rough.h) over Hertz, at rest and at impact */
   double rough_rest = 0.0, rough_imp = 0.0;
   if (sigma > 0.0) {
@@ -264,13 +268,14 @@ static int cmd_scene(int argc, char **argv)
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
     "delta_rest,a_rest,fessler,delta_n1,v_yield,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
-    "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history,rolled_semi_axes";
+    "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history,rolled_semi_axes,"
+    "md_reach";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
                         d_rest, rest.a, fessler, d_n1, v_yield, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
                         rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, jkr_break, rough_reach, W_sep,
-                        v_stick, beta_cmd, beta_hist, rolled / imp.a};
+                        v_stick, beta_cmd, beta_hist, rolled / imp.a, md_reach};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",

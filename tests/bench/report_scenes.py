@@ -62,6 +62,8 @@ RUNS = {
                          settings="gwElliptic on"),
     "hertz_102": timed(SPHERES, model="hertz", cdf="1.02"),
     "jkr": timed(SPHERES, model="jkr_elliptic", cdf="1.02"),
+    "dmt": timed(SPHERES, model="jkr_elliptic", cdf="1.02", settings="tangential_damping on adhesionLaw dmt"),
+    "maugis": timed(SPHERES, model="jkr_elliptic", cdf="1.02", settings="tangential_damping on adhesionLaw maugis"),
     "hertz": packed(model="hertz"),
     # the same law on another jittered lattice: the resolution of the packing figures
     "hertz_seed": packed(model="hertz", seed="15485863"),
@@ -93,6 +95,8 @@ ROWS = [
     ("rough", "Feng law: fitted coefficients", None, "gw_fitted", "hertz_112", None),
     ("rough", "GW closed form (Eq. 33; n_asp = 1)", None, "gw_closed", "hertz_112", None),
     ("adhesion", "jkr_elliptic (hint carried)", None, "jkr", "hertz_102", None),
+    ("adhesion", "adhesionLaw dmt (DMT)", None, "dmt", "hertz_102", None),
+    ("adhesion", "adhesionLaw maugis (Maugis-Dugdale)", None, "maugis", "hertz_102", None),
     ("adhesion", "gw_adhesion table + GW closed form", None, "gw_adhesion", "hertz_112", None),
     ("classical normal", "hertz_elliptic + cmd_tangential (reference)", "hertz: restitution damping", "reference",
      "hertz", "reference"),
