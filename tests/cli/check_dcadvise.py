@@ -69,9 +69,9 @@ check(rc == 0 and "tangential cmd_tangential tangentialRoughness on" in out,
       "rough scene needing memory: the deck line adds tangentialRoughness on")
 rc, out, err = advise([drop])
 check(rc == 0 and "tangentialRoughness" not in out, "smooth scene: no tangentialRoughness")
-# adhesion across the Tabor range: z0 0.4 nm (Tabor 26): JKR; 10 nm (Tabor 2.6): Maugis-Dugdale with its property
+# adhesion across the Tabor range: z0 0.4 nm (Tabor 65): JKR; 10 nm (Tabor 2.6): Maugis-Dugdale with its property
 rc, out, err = advise([drop, "-var", "w", "0.05"])
-check(rc == 0 and "Tabor 26" in out and "adhesionLaw" not in out, "Tabor 26: jkr_elliptic, JKR")
+check(rc == 0 and "Tabor 65" in out and "adhesionLaw" not in out, "Tabor 65: jkr_elliptic, JKR")
 rc, out, err = advise([drop, "-var", "w", "0.05", "--z0", "1e-8"])
 check(rc == 0 and "Tabor 2.6" in out and "model jkr_elliptic adhesionLaw maugis" in out and
       "equilibriumSeparation peratomtypepair ... (z0 1e-08 m)" in out, "Tabor 2.6: adhesionLaw maugis and z0")
