@@ -10,21 +10,30 @@ double dc_md_lambda_of_tabor(double mu_T)
   return 32.0 / (9.0 * sqrt(3.0)) * cbrt(9.0 / (16.0 * M_PI)) * mu_T;
 }
 
+/* A polynomial of degree 15 in x by Estrin's scheme (four levels, against
+   Horner's fifteen dependent steps) */
+static double md_poly15(const double c[16], double x)
+{
+  const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+  const double q0 = (c[0] + c[1] * x) + (c[2] + c[3] * x) * x2, q1 = (c[4] + c[5] * x) + (c[6] + c[7] * x) * x2;
+  const double q2 = (c[8] + c[9] * x) + (c[10] + c[11] * x) * x2, q3 = (c[12] + c[13] * x) + (c[14] + c[15] * x) * x2;
+  return (q0 + q1 * x4) + (q2 + q3 * x4) * x8;
+}
+
 /* s + (s^2 - 1) arctan s (MD1's first bracket): the series
-   sum_j>=1 (-1)^(j-1) 4j/(4j^2 - 1) s^(2j+1) below s = 1/4 (up to 16
-   terms: the next is below 1e-19 of the first) */
+   sum_j>=1 (-1)^(j-1) 4j/(4j^2 - 1) s^(2j+1) below s = 1/4 (16 terms:
+   the next is below 1e-19 of the first) */
 static const double md_g1_series[16] = {
   4.0 / 3.0, -8.0 / 15.0, 12.0 / 35.0, -16.0 / 63.0, 20.0 / 99.0, -24.0 / 143.0, 28.0 / 195.0, -32.0 / 255.0,
   36.0 / 323.0, -40.0 / 399.0, 44.0 / 483.0, -48.0 / 575.0, 52.0 / 675.0, -56.0 / 783.0, 60.0 / 899.0, -64.0 / 1023.0};
-static double md_g1_small(double s)
-{
-  const double s2 = s * s;
-  /* the terms the sum needs: the first left out is below 3e-17 of the sum */
-  const int n = s2 < 1e-8 ? 2 : s2 < 1e-4 ? 4 : s2 < 1e-2 ? 8 : 16;
-  double sum = 0.0;
-  for (int j = n - 1; j >= 0; j--) sum = md_g1_series[j] + s2 * sum;
-  return s * s2 * sum;
-}
+static double md_g1_small(double s) { return s * s * s * md_poly15(md_g1_series, s * s); }
+
+/* arctan s below s = 1/4: s sum_k (-1)^k s^2k/(2k + 1), 16 terms (the next
+   below 2e-21 of the first) */
+static const double md_atan_series[16] = {
+  1.0, -1.0 / 3.0, 1.0 / 5.0, -1.0 / 7.0, 1.0 / 9.0, -1.0 / 11.0, 1.0 / 13.0, -1.0 / 15.0,
+  1.0 / 17.0, -1.0 / 19.0, 1.0 / 21.0, -1.0 / 23.0, 1.0 / 25.0, -1.0 / 27.0, 1.0 / 29.0, -1.0 / 31.0};
+
 static double md_g1(double s) { return s >= 0.25 ? s + (s * s - 1.0) * atan(s) : md_g1_small(s); }
 
 /* s arctan s - (1 + s^2)^1/2 + 1 (MD1's second bracket), without the cancellation */
@@ -203,9 +212,10 @@ typedef struct {
 
 static void md_at_s(double lambda, double s, md_point *p)
 {
-  const double s2 = s * s, t = atan(s), q2 = 1.0 + s2, q = sqrt(q2), iq2 = 1.0 / q2;
-  /* s^2/(q + 1) = q - 1 without its cancellation below s = 1/4 */
+  /* below s = 1/4: arctan s from its series, s^2/(q + 1) = q - 1 without its cancellation */
   const int small = s < 0.25;
+  const double s2 = s * s, t = small ? s * md_poly15(md_atan_series, s2) : atan(s), q2 = 1.0 + s2, q = sqrt(q2);
+  const double iq2 = 1.0 / q2;
   const double g1 = small ? md_g1_small(s) : s + (s2 - 1.0) * t, g2 = s * t - (small ? s2 / (q + 1.0) : q - 1.0);
   const double dg1 = 2.0 * s * (t + s * iq2), dg2 = t + s * iq2 - s * q * iq2;
   const double l43 = 4.0 / 3.0 * lambda, A = 0.5 * lambda * g1, B = l43 * lambda * g2, root = sqrt(B * B + 4.0 * A);

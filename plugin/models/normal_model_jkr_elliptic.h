@@ -315,11 +315,10 @@ private:
   int lawOf(const SurfacesCloseData &d) const
   {
     if (law < LAW_MD) return law;
-    const int k = d.itype * (ntypes_ + 1) + d.jtype;
     if (work[d.itype][d.jtype] == 0.0) return LAW_JKR;
     if (law == LAW_MD) return LAW_MD;
     static const int of_tabor[] = {LAW_JKR, LAW_DMT, LAW_MD};   /* by DC_ADHESION_JKR, _DMT, _MD */
-    return of_tabor[dc_md_tabor_law(&md[k], sphereEffectiveRadius(d))];
+    return of_tabor[dc_md_tabor_law(&md[d.itype * (ntypes_ + 1) + d.jtype], sphereEffectiveRadius(d))];
   }
 
   /* Maugis-Dugdale at overlap delta (superquadrics: the sphere of elliptic
@@ -332,12 +331,13 @@ private:
     const dc_md_sphere_pair &p = md[itype * (ntypes_ + 1) + jtype];
     dc_md_contact *h = reinterpret_cast<dc_md_contact *>(&sidata.contact_history[md_offset]);
     const bool forming = h->phase == DC_MD_APART;
-    double R = sphereEffectiveRadius(sidata), R_minor = R, F, a;
+    double R = sphereEffectiveRadius(sidata), R_minor = R, R_law = R, F, a;   /* R_law: the law's sphere */
     int st;
     if (superquadric(sidata)) {
       dc_hertz_geom g;
       relativeRadii(sidata, R, R_minor, NULL);
       st = dc_hertz_geometry(R, R_minor, &g);
+      R_law = g.R_force;
       if (st == DC_OK) st = dc_md_ellipse(&p, &g, delta, h, &F, &a);
     } else {
       st = dc_md_sphere(&p, R, delta, h, &F, &a);
@@ -355,10 +355,11 @@ private:
     double axis[3];
     double *ax = axisWanted(axis);
     if (ax) {
-      const double r3 = h->lambda / p.Lam, sF = p.piw * r3 * r3 * r3;
+      const double sF = p.piw * R_law;   /* the force's scale pi w R */
       dc_contact c = {F, kn, M_PI * a * a, a, a, 0.0, a > 0.0};
       if (a > 0.0) c.F_bound = dc_md_friction_load(h, F / sF) * sF;
-      if (!(c.F_bound >= 0.0)) fail("Maugis-Dugdale pull-off force", delta, R, R, work[itype][jtype], Yeff[itype][jtype], DC_ENOCONV);
+      if (!(c.F_bound >= 0.0))
+        fail("Maugis-Dugdale pull-off force", delta, R, R_minor, work[itype][jtype], Yeff[itype][jtype], DC_ENOCONV);
       publish(sidata, c, ax);
     }
     return true;

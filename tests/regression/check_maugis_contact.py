@@ -89,9 +89,9 @@ class MD:
         s = math.sqrt(m * m - 1)
         return a ** 3 - lam * a * a * (s + m * m * math.acos(1 / m)), a * a - 4 * lam * a * s / 3
 
-    def solve(self, k, D):
-        """t in cell k (D rising across it) with D(t) = D, by bisection."""
-        lo, hi = self.t[k], self.t[k + 1]
+    def solve(self, k, D, lo=None):
+        """t in cell k (D rising across it; from lo if given) with D(t) = D, by bisection."""
+        lo, hi = self.t[k] if lo is None else lo, self.t[k + 1]
         for _ in range(200):
             mid = 0.5 * (lo + hi)
             if mid in (lo, hi):
@@ -147,14 +147,7 @@ class MD:
 
     def fold_solve(self, k, D):
         """D lies between the fold and cell k's lower end: the rising side of the fold."""
-        tf, Df = self.fold(k)
-        lo, hi = tf, self.t[k + 1]
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid in (lo, hi):
-                break
-            lo, hi = (mid, hi) if self.at(mid)[1] < D else (lo, mid)
-        return 0.5 * (lo + hi)
+        return self.solve(k, D, lo=self.fold(k)[0])
 
     def loss(self):
         """The work a collision loses (J): minus the integral of P dD along
