@@ -343,7 +343,7 @@ double dc_md_reach(double lambda)
 
 const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS] = {
   {"md_phase", 0}, {"md_x", 0}, {"md_s", 0}, {"md_lambda", 0}, {"md_pulloff", 0},
-  {"md_sep", 0}, {"md_fold", 0}, {"md_last", 0}, {"md_slope", 0}, {"md_curve", 0},
+  {"md_sep", 0}, {"md_fold", 0}, {"md_last", 0}, {"md_dsdD", 0}, {"md_curve", 0},
 };
 
 /* Enters or keeps the contact branch at D from the guess s0; the fold and
@@ -351,30 +351,33 @@ const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS] = {
 static int md_contact(double D, dc_md_contact *h, double s0, double *Pbar, double *abar)
 {
   const double l = h->lambda;
-  if (h->Dsep == 0.0) {   /* the separation overlap is negative: 0 means not yet found */
-    h->sfold = md_fold_s(l);
-    if (h->sfold > 0.0) {
+  double Dsep = h->Dsep, sfold = h->sfold;
+  if (Dsep == 0.0) {   /* the separation overlap is negative: 0 means not yet found */
+    sfold = md_fold_s(l);
+    if (sfold > 0.0) {
       md_point p;
-      md_at_s(l, h->sfold, &p);
-      h->Dsep = p.D;
+      md_at_s(l, sfold, &p);
+      Dsep = p.D;
     } else {
       double c0, P0;
-      dc_md_state_zero(l, &c0, &P0, &h->Dsep);
+      dc_md_state_zero(l, &c0, &P0, &Dsep);
     }
   }
   double s;
   md_point p;
-  const int st = md_solve(l, D, h->sfold, s0, &s, &p);
-  if (st != DC_OK) return st;
-  /* d^2 s/dDbar^2 from the last two states on the branch, for the next predictor */
-  const double dDs = D - h->Dlast;
-  h->curve = h->phase == DC_MD_CONTACT && dDs != 0.0 ? (1.0 / p.dD - 1.0 / h->slope) / dDs : 0.0;
+  const int st = md_solve(l, D, sfold, s0, &s, &p);
+  if (st != DC_OK) return st;   /* h untouched */
+  h->Dsep = Dsep;
+  h->sfold = sfold;
+  /* ds/dDbar and d^2 s/dDbar^2 from the last two states on the branch, for the next predictor */
+  const double dsdD = 1.0 / p.dD, dDs = D - h->Dlast;
+  h->curve = h->phase == DC_MD_CONTACT && dDs != 0.0 ? (dsdD - h->dsdD) / dDs : 0.0;
   if (!isfinite(h->curve)) h->curve = 0.0;
   h->phase = DC_MD_CONTACT;
   h->x = p.a;
   h->s = s;
   h->Dlast = D;
-  h->slope = p.dD;
+  h->dsdD = dsdD;
   *Pbar = p.P;
   *abar = p.a;
   return DC_OK;
@@ -397,21 +400,21 @@ int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar)
 {
   const double l = h->lambda;
   if (!lambda_ok(l) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
-  dc_md_contact t = *h;
-  int st = DC_OK;
-  if (t.phase == DC_MD_CONTACT) {
-    if (Dbar >= t.Dsep) {
-      /* the previous state and the tangent there: a first-order predictor */
-      /* the second-order term where it is the smaller */
-      const double dD = Dbar - t.Dlast, lin = dD / t.slope, quad = 0.5 * t.curve * dD * dD;
-      const double s1 = t.s + lin + (fabs(quad) <= fabs(lin) ? quad : 0.0);
-      st = md_contact(Dbar, &t, s1 > 0.0 && s1 <= DBL_MAX ? s1 : 0.25 * t.s, Pbar, abar);
-    } else {
-      md_zone_or_apart(Dbar, &t, Pbar, abar);
-    }
-  } else if (t.phase == DC_MD_APART && Dbar < -2.0 / (M_PI * l)) {
+  if (h->phase == DC_MD_CONTACT && Dbar >= h->Dsep) {
+    /* on the branch: a second-order predictor from the last two states (its second-order
+       term where it is the smaller); h is written only on success */
+    const double dD = Dbar - h->Dlast, lin = dD * h->dsdD, quad = 0.5 * h->curve * dD * dD;
+    const double s1 = h->s + lin + (fabs(quad) <= fabs(lin) ? quad : 0.0);
+    return md_contact(Dbar, h, s1 > 0.0 && s1 <= DBL_MAX ? s1 : 0.25 * h->s, Pbar, abar);
+  }
+  if (h->phase == DC_MD_APART && Dbar < -2.0 / (M_PI * l)) {
     *Pbar = *abar = 0.0;
     return DC_OK;
+  }
+  dc_md_contact t = *h;
+  int st = DC_OK;
+  if (t.phase == DC_MD_CONTACT) {   /* below the separation overlap */
+    md_zone_or_apart(Dbar, &t, Pbar, abar);
   } else {
     double c0, P0, D0;
     dc_md_state_zero(l, &c0, &P0, &D0);
@@ -464,23 +467,23 @@ int dc_md_sphere_pair_of(double Estar, double w, double z0, dc_md_sphere_pair *p
    the contact leaves DC_MD_APART, the scales from r3 */
 static int md_si(const dc_md_sphere_pair *p, double r3, double delta, dc_md_contact *h, double *F, double *a)
 {
+  const double D = delta / (p->Cd * r3);
   if (!(fabs(delta) <= DBL_MAX)) return DC_EDOM;
-  dc_md_contact t = *h;
-  if (t.phase == DC_MD_APART) {
+  if (h->phase == DC_MD_APART) {
     if (!(delta > -p->h0)) {
       *F = *a = 0.0;
       return DC_OK;
     }
     const double l = p->Lam * r3;
-    if (l != t.lambda) t.Dsep = t.Pc = 0.0;   /* the fold and the pull-off of another lambda */
-    t.lambda = l;
+    if (!lambda_ok(l) || !(fabs(D) <= 1e30)) return DC_EDOM;
+    if (l != h->lambda) h->Dsep = h->Pc = 0.0;   /* the fold and the pull-off of another lambda */
+    h->lambda = l;
   }
   double P, ab;
-  const int st = dc_md_step(delta / (p->Cd * r3), &t, &P, &ab);
+  const int st = dc_md_step(D, h, &P, &ab);
   if (st != DC_OK) return st;
   const double f = P * p->piw * r3 * r3 * r3, rad = ab * p->Ca * r3 * r3;
   if (!(fabs(f) <= DBL_MAX && rad <= DBL_MAX)) return DC_ERANGE;
-  *h = t;
   *F = f;
   *a = rad;
   return DC_OK;

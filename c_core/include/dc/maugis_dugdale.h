@@ -122,13 +122,13 @@ double dc_md_reach(double lambda);
    s = (m^2 - 1)^1/2), lambda of the pair, Pc the pull-off force under
    load control (0 until dc_md_friction_load asks), Dsep and sfold the
    separation overlap and the fold's s (0: no fold; both found as the
-   contact first enters the branch; Dsep 0: not yet), Dlast, slope and
-   curve the last overlap on the branch, dDbar/ds there and d^2 s/dDbar^2
+   contact first enters the branch; Dsep 0: not yet), Dlast, dsdD and
+   curve the last overlap on the branch, ds/dDbar there and d^2 s/dDbar^2
    from the last two steps (the next step's second-order predictor).
    Zeros: apart. */
 enum { DC_MD_APART = 0, DC_MD_ZONE = 1, DC_MD_CONTACT = 2 };
 typedef struct {
-  double phase, x, s, lambda, Pc, Dsep, sfold, Dlast, slope, curve;
+  double phase, x, s, lambda, Pc, Dsep, sfold, Dlast, dsdD, curve;
 } dc_md_contact;
 #define DC_MD_CONTACT_NFIELDS 10
 extern const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS];   /* none flips */
@@ -182,8 +182,9 @@ static inline int dc_md_tabor_law(const dc_md_sphere_pair *p, double R)
    dc_md_step in SI units. *F [N] and *a [m]; h's lambda set as the
    contact leaves DC_MD_APART (R is the pair's for the contact's life).
    Apart with delta <= -h0: nothing computed. DC_EDOM for R <= 0, a
-   non-finite delta or a lambda outside [1e-10, 1e10], DC_ERANGE if F
-   overflows (h untouched), else dc_md_step's status. */
+   non-finite delta or a lambda outside [1e-10, 1e10] (h untouched);
+   DC_ERANGE if F overflows (h holds the step's state); else dc_md_step's
+   status. */
 int dc_md_sphere(const dc_md_sphere_pair *p, double R, double delta, dc_md_contact *h, double *F, double *a);
 
 /* An elliptic contact (superquadrics) of geometry g (dc_hertz_geometry of
