@@ -139,12 +139,13 @@ extern const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS];   /* none fl
    or to the contact branch; the zone's states until Dbar passes the
    branch end's Dbar0 (contact) or the zone's fold (apart); the stable
    contact branch down to its separation overlap, then the zone or apart.
-   On the branch: Newton in s (dc_md_branch_s) from the previous state's
-   tangent, safeguarded by a bracket; the fold searched once per contact
-   (about 100 branch evaluations). *Pbar the force, *abar the contact
-   radius (0 unless in contact); h updated. DC_EDOM for h->lambda outside
-   [1e-10, 1e10] or |Dbar| > 1e30; DC_ENOCONV if the solve fails (h
-   untouched on error). */
+   On the branch: Newton in s (dc_md_branch_s) from a second-order
+   predictor (the last two states), safeguarded by a bracket, the last
+   step below 1e-7 s taken to first order; the fold searched once per
+   contact (about 100 branch evaluations). *Pbar the force, *abar the
+   contact radius (0 unless in contact); h updated. DC_EDOM for h->lambda
+   outside [1e-10, 1e10] or |Dbar| > 1e30; DC_ENOCONV if the solve fails
+   (h untouched on error). */
 int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar);
 
 /* The load that bounds friction, F + 2 |F_c| with F_c the pull-off force
