@@ -14,6 +14,10 @@ tension (overlap -0.4 um, the neck formed) and sheared (inputs/adhesive_shear):
   checks the plumbing) within 2%: the force is split along the centre line,
   while the contact normal of the offset tips tilts by about dy/(R_i + R_j)
   and moves up to 1.2% of the normal force into the measured friction;
+- Maugis-Dugdale (adhesionLaw maugis, z0 = 1 um: lambda 0.63): the
+  normal force in tension is the model's at the held overlap and friction
+  slides at mu (F + 2 |F_c|), F_c its pull-off force under load control
+  (both from regress.MaugisDugdale, independent of c_core);
 - the cmd_tangential run against its committed reference.
 Usage: check_adhesive_shear.py WORKDIR [--update]"""
 import math
@@ -21,7 +25,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, compare_tables, dclaw, jkr_sphere, run, save_reference, start, subsample, table
+from regress import ROOT, MaugisDugdale, compare_tables, dclaw, jkr_sphere, run, save_reference, start, subsample, table
 
 work, update, c = start()
 E, nu, mu, w, R, d1 = 5e6, 0.3, 0.5, 0.05, 0.5e-3, -4e-7
@@ -59,6 +63,23 @@ c.true(worst < 1e-6, "sliding in tension at mu (F + 3 pi w R*) (%.6g N at the he
        % (F_slide, worst))
 c.true(max(split(r)[1] for r in runs["history"]) < 1e-3 * F_slide,
        "stock tangential history: no friction in tension (max %.3g N)" % max(split(r)[1] for r in runs["history"]))
+# Maugis-Dugdale: the force at each row's overlap on the contact branch (the path pressed to 1.5 um and back)
+d = os.path.join(work, "maugis")
+run("adhesive_shear/in.adhesive_shear", d, variables={"alaw": "maugis", "z0": 1e-6}, tag="maugis")
+md = MaugisDugdale(Estar, w, R, 1e-6)
+md_rows = [r for r in table(os.path.join(d, "shear.txt")) if r[2] > 0]
+F_c = md.pulloff()
+worst_n = worst_t = 0.0
+for r in md_rows[len(md_rows) // 2:]:
+    fn, ft = split(r)
+    D = (0.002 - math.hypot(r[1], r[2])) / md.sd
+    t = md.path([1.5e-6 / md.sd, D])[1]   # from the pressed state back to the row's overlap
+    F = md.at(t)[0] * md.sF
+    worst_n = max(worst_n, abs(fn - F) / abs(F_c))
+    worst_t = max(worst_t, abs(ft / (mu * (F - 2 * F_c)) - 1))
+c.true(t > md.c0 and F < 0, "maugis (lambda %.3g): held in contact, in tension (F = %.6g N)" % (md.lam, F))
+c.true(worst_n < 1e-9, "maugis: normal force against the model at the held overlap: worst %.3g of F_c (tol 1e-9)" % worst_n)
+c.true(worst_t < 1e-6, "maugis: sliding at mu (F + 2 |F_c|), F_c = %.6g N: worst %.3g (tol 1e-6)" % (F_c, worst_t))
 # superquadrics: relative radii of the two tips (each b^2/a = 0.24 mm across,
 # c^2/a = 0.667 mm along z; halved for the pair)
 for tmodel in ("cmd_tangential", "history"):

@@ -3,15 +3,10 @@
 adhesionLaw maugis and tabor; inputs/maugis_contact): a sphere pressed into
 a wall and lifted, two spheres pressed together and parted (prescribed
 motion), and two free spheres colliding head-on, with no damping.
-The reference is an independent solution of the model here in Python:
-the contact branch (Johnson & Greenwood 1997's equations, solved for m =
-c/a by bisection with arcsec m = arccos(1/m), not the C code's variable s,
-series or Newton), the zone-only states (closed form), and the
-overlap-controlled path found by following the whole equilibrium curve
-(zone c from 0 to the branch end, then the contact radius) on a grid:
-a state moves along the curve while the overlap does, and where the curve
-turns back (a fold) it jumps at constant overlap to the next rising part
-of the curve, or apart. Checks:
+The reference is an independent solution of the model in Python
+(regress.MaugisDugdale: the branch solved for m = c/a by bisection, not the
+C code's variable s, series or Newton; the overlap-controlled path by
+following the whole curve of states and jumping at its folds). Checks:
 - the force at every overlap of the cycle (lambda 0.37 and 0.29: the zone
   acts before touch and after the contact ends; 3.7 and 2.9: the contact
   folds) within 1e-9 of the pull-off force; the zone starts at the
@@ -36,144 +31,18 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import compare_tables, elliptic_hertz, relative_radii, run, start, table
+from regress import MaugisDugdale, compare_tables, elliptic_hertz, relative_radii, run, start, table
 
 work, _, c = start()
 E, nu, w, r, rho = 5e6, 0.3, 0.5, 1e-3, 2500.0
 Estar = E / (2.0 * (1 - nu ** 2))
-K = 4.0 / 3.0 * Estar
-
-
-class MD:
-    """Maugis-Dugdale of a sphere pair (effective radius R) for the
-    surfaces' equilibrium separation z0, in Johnson & Greenwood's units."""
-
-    def __init__(self, R, z0):
-        self.R = R
-        sigma0 = 16 * w / (9 * math.sqrt(3) * z0)      # Lennard-Jones' largest stress
-        self.lam = 2 * sigma0 * (R / (math.pi * w * K * K)) ** (1 / 3)
-        self.sd = (math.pi ** 2 * w * w * R / K ** 2) ** (1 / 3)
-        self.sF = math.pi * w * R
-        lam = self.lam
-        A, B = math.pi * lam / 4, 4 * lam * lam / 3 * (math.pi / 2 - 1)
-        self.c0 = (-B + math.sqrt(B * B + 4 * A)) / (2 * A)   # the branch end's zone radius
-        # the curve: t in [0, c0] the zone's radius, t > c0 the contact radius a = t - c0
-        n = 3000
-        ts = [self.c0 * k / n for k in range(n + 1)]
-        amax = 3.0
-        ts += [self.c0 + amax * (k / n) ** 1.5 for k in range(1, n + 1)]
-        self.t = ts
-        self.D = [self.at(x)[1] for x in ts]
-
-    def m_of(self, a):
-        lam = self.lam
-        f = lambda m: (lam * a * a / 2 * (math.sqrt(m * m - 1) + (m * m - 2) * math.acos(1 / m))
-                       + 4 * lam * lam * a / 3 * (math.sqrt(m * m - 1) * math.acos(1 / m) - m + 1) - 1)
-        lo, hi = 1.0, 2.0
-        while f(hi) < 0:
-            lo, hi = hi, 2 * hi
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid in (lo, hi):
-                break
-            lo, hi = (mid, hi) if f(mid) < 0 else (lo, mid)
-        return 0.5 * (lo + hi)
-
-    def at(self, t):
-        """(P, D) on the curve."""
-        lam = self.lam
-        if t <= self.c0:   # the zone alone: gap h0 at r = c, uniform stress sigma0 inside
-            return -math.pi / 2 * lam * t * t, t * t / 2 - 8 * lam * t / (3 * math.pi) - 2 / (math.pi * lam)
-        a = t - self.c0
-        m = self.m_of(a)
-        s = math.sqrt(m * m - 1)
-        return a ** 3 - lam * a * a * (s + m * m * math.acos(1 / m)), a * a - 4 * lam * a * s / 3
-
-    def solve(self, k, D, lo=None):
-        """t in cell k (D rising across it; from lo if given) with D(t) = D, by bisection."""
-        lo, hi = self.t[k] if lo is None else lo, self.t[k + 1]
-        for _ in range(200):
-            mid = 0.5 * (lo + hi)
-            if mid in (lo, hi):
-                break
-            lo, hi = (mid, hi) if self.at(mid)[1] < D else (lo, mid)
-        return 0.5 * (lo + hi)
-
-    def rising(self, k):
-        return self.D[k + 1] > self.D[k]
-
-    def fold(self, k):
-        """The least D near cell k (golden section over cells k-1..k+1): (t, D)."""
-        lo, hi = self.t[max(k - 1, 0)], self.t[min(k + 2, len(self.t) - 1)]
-        g = (3 - math.sqrt(5)) / 2
-        for _ in range(200):
-            x1, x2 = lo + g * (hi - lo), hi - g * (hi - lo)
-            if self.at(x1)[1] <= self.at(x2)[1]:
-                hi = x2
-            else:
-                lo = x1
-            if hi - lo < 1e-15 * (1 + hi):
-                break
-        x = 0.5 * (lo + hi)
-        return x, self.at(x)[1]
-
-    def path(self, Ds, solve=lambda i: True):
-        """The overlap-controlled states along the overlaps Ds: per overlap
-        the curve's parameter t (where solve(index)), or None (apart)."""
-        out, k = [], None
-        for i, D in enumerate(Ds):
-            if k is None:
-                if D >= self.D[0]:   # the zone reaches the surfaces: the first rising crossing
-                    k = next((j for j in range(len(self.t) - 1) if self.rising(j) and self.D[j] <= D <= self.D[j + 1]), None)
-            else:
-                while k + 1 < len(self.t) - 1 and D > self.D[k + 1]:
-                    k += 1
-                while k is not None and D < self.D[k]:
-                    if k > 0 and self.rising(k - 1):
-                        k -= 1
-                        continue
-                    tf, Df = self.fold(k)   # the curve turns back here
-                    if D >= Df:
-                        break
-                    # the jump: the next rising part at smaller t, or apart
-                    k = next((j for j in range(k - 1, -1, -1) if self.rising(j) and self.D[j] <= D <= self.D[j + 1]), None)
-            if k is not None and not solve(i):
-                out.append(self.t[k])   # attached, not solved here
-            elif k is not None and not (self.D[k] <= D):
-                out.append(self.fold_solve(k, D))
-            else:
-                out.append(None if k is None else self.solve(k, D))
-        return out
-
-    def fold_solve(self, k, D):
-        """D lies between the fold and cell k's lower end: the rising side of the fold."""
-        return self.solve(k, D, lo=self.fold(k)[0])
-
-    def loss(self):
-        """The work a collision loses (J): minus the integral of P dD along
-        the curve from the retraction's last fold to the approach's landing
-        point (trapezoid in D, Richardson on 2 grids)."""
-        lam = self.lam
-        t_in = self.path([-2 / (math.pi * lam)])[0]
-        # the retraction ends at the curve's least D below t_in
-        k = min(range(len(self.t) - 1), key=lambda j: self.D[j] if self.t[j] < t_in else 1e300)
-        t_f = self.fold(k)[0]
-
-        def trap(n):
-            pts = [self.at(t_f + (t_in - t_f) * j / n) for j in range(n + 1)]
-            return sum(0.5 * (pts[j][0] + pts[j + 1][0]) * (pts[j + 1][1] - pts[j][1]) for j in range(n))
-
-        I1, I2 = trap(1000), trap(2000)
-        return -(I2 + (I2 - I1) / 3) * self.sF * self.sd
-
-
 mstar = rho * 4 / 3 * math.pi * r ** 3 / 2
 cases = {}
 for z0 in (1e-5, 1e-6):
-    pair = MD(r / 2, z0)
+    pair = MaugisDugdale(Estar, w, r / 2, z0)
     vs = math.sqrt(2 * pair.loss() / mstar)
     cases[z0] = vs
-    print("     z0 %g: lambda %.4g (pair), %.4g (wall); sticking speed v_s = %.6g m/s" % (z0, pair.lam, MD(r, z0).lam, vs))
+    print("     z0 %g: lambda %.4g (pair), %.4g (wall); sticking speed v_s = %.6g m/s" % (z0, pair.lam, MaugisDugdale(Estar, w, r, z0).lam, vs))
 
 runs = {}
 
@@ -214,7 +83,7 @@ for name, z0 in (("zone", 1e-5), ("fold", 1e-6), ("sq", 1e-6)):
         cases_here = (("sphere-wall", r, lambda q: r - q[1], lambda q: q[2]),
                       ("sphere-sphere", r / 2, lambda q: 2 * r - (q[4] - q[3]), lambda q: -q[5]))
     for what, R, overlap, force in cases_here:
-        md = MD(R, z0)
+        md = MaugisDugdale(Estar, w, R, z0)
         Ds = [overlap(q) / md.sd for q in rows]
         on = [i for i in range(1, len(rows)) if (force(rows[i]) == 0.0) != (force(rows[i - 1]) == 0.0)]
         near = set(j for i in on for j in range(i - 3, i + 3))
@@ -257,7 +126,7 @@ for name, z0 in (("zone", 1e-5), ("fold", 1e-6), ("sq", 1e-6)):
           "%s: rebound speed at 1.25 v_s vs (v^2 - v_s^2)^1/2 (the loop's loss)" % name)
 
 stick = runs["fold_stick"][-1]
-md = MD(r / 2, 1e-6)
+md = MaugisDugdale(Estar, w, r / 2, 1e-6)
 gap = stick[7] - stick[6] - 2 * r
 c.true(stick[10] != 0.0 and gap < md.sd, "at 0.8 v_s the spheres stick: gap %.3g m, force %.3g N" % (gap, stick[10]))
 compare_tables(c, runs["zone_np2"], runs["zone"], 1e-13, "spheres: 2 ranks equal 1 rank")
