@@ -6,7 +6,8 @@ motion), and two free spheres colliding head-on, with no damping.
 The reference is an independent solution of the model in Python
 (regress.MaugisDugdale: the branch solved for m = c/a by bisection, not the
 C code's variable s, series or Newton; the overlap-controlled path by
-following the whole curve of states and jumping at its folds). Checks:
+following the whole curve of states and jumping at its folds; its pull-off
+force against the mpmath table maugis.csv at lambda 0.5, 1, 2). Checks:
 - the force at every overlap of the cycle (lambda 0.37 and 0.29: the zone
   acts before touch and after the contact ends; 3.7 and 2.9: the contact
   folds) within 1e-9 of the pull-off force; the zone starts at the
@@ -37,6 +38,15 @@ work, _, c = start()
 E, nu, w, r, rho = 5e6, 0.3, 0.5, 1e-3, 2500.0
 Estar = E / (2.0 * (1 - nu ** 2))
 mstar = rho * 4 / 3 * math.pi * r ** 3 / 2
+# the Python model itself against the mpmath solution (tests/reference/maugis.csv): the pull-off force
+K = 4.0 / 3.0 * Estar
+for row in open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "reference", "maugis.csv")):
+    v = row.strip().split(",")
+    if v[0] == "pulloff" and v[1] in ("0.5", "1", "2"):
+        lam = float(v[1])
+        z0 = 32 * w / (9 * math.sqrt(3) * lam) * (r / (math.pi * w * K * K)) ** (1 / 3)
+        m = MaugisDugdale(Estar, w, r, z0)
+        c.rel(m.pulloff() / m.sF, float(v[2]), 1e-10, "the Python model's pull-off at lambda %s against mpmath" % v[1])
 cases = {}
 for z0 in (1e-5, 1e-6):
     pair = MaugisDugdale(Estar, w, r / 2, z0)

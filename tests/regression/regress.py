@@ -326,19 +326,22 @@ class MaugisDugdale:
     def rising(self, k):
         return self.D[k + 1] > self.D[k]
 
-    def fold(self, k):
-        """The least D near cell k (golden section over cells k-1..k+1): (t, D)."""
-        lo, hi = self.t[max(k - 1, 0)], self.t[min(k + 2, len(self.t) - 1)]
+    def least(self, lo, hi, which):
+        """The t in (lo, hi) where P (which = 0) or D (1) is least, by golden section."""
         g = (3 - math.sqrt(5)) / 2
         for _ in range(200):
             x1, x2 = lo + g * (hi - lo), hi - g * (hi - lo)
-            if self.at(x1)[1] <= self.at(x2)[1]:
+            if self.at(x1)[which] <= self.at(x2)[which]:
                 hi = x2
             else:
                 lo = x1
             if hi - lo < 1e-15 * (1 + hi):
                 break
-        x = 0.5 * (lo + hi)
+        return 0.5 * (lo + hi)
+
+    def fold(self, k):
+        """The least D near cell k (over cells k-1..k+1): (t, D)."""
+        x = self.least(self.t[max(k - 1, 0)], self.t[min(k + 2, len(self.t) - 1)], 1)
         return x, self.at(x)[1]
 
     def path(self, Ds, solve=lambda i: True):
@@ -379,17 +382,8 @@ class MaugisDugdale:
         the grid's least."""
         n0 = next(j for j, t in enumerate(self.t) if t > self.c0)
         k = min(range(n0, len(self.t)), key=lambda j: self.at(self.t[j])[0])
-        lo, hi = self.t[max(k - 1, n0)], self.t[min(k + 1, len(self.t) - 1)]
-        g = (3 - math.sqrt(5)) / 2
-        for _ in range(200):
-            x1, x2 = lo + g * (hi - lo), hi - g * (hi - lo)
-            if self.at(x1)[0] <= self.at(x2)[0]:
-                hi = x2
-            else:
-                lo = x1
-            if hi - lo < 1e-15 * (1 + hi):
-                break
-        return min(self.at(0.5 * (lo + hi))[0], self.at(self.t[n0])[0]) * self.sF
+        x = self.least(self.t[max(k - 1, n0)], self.t[min(k + 1, len(self.t) - 1)], 0)
+        return min(self.at(x)[0], self.at(self.t[n0])[0]) * self.sF
 
     def loss(self):
         """The work a collision loses (J): minus the integral of P dD along
