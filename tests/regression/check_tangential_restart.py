@@ -7,7 +7,9 @@ load history (turning points, slip profile) travels in LIGGGHTS' contact
 history through the restart file. The same for two rough spheres (gw_rough
 gwElliptic on, sigma 1e-6 per sphere, with tangentialRoughness on: the
 summits' patch), which also run on 2 MPI ranks, one sphere on each, equal
-to 1 rank digit for digit.
+to 1 rank digit for digit; and for two adhesive spheres (jkr_elliptic with
+adhesionLaw maugis, lambda 1.85: the Maugis-Dugdale state and its pull-off
+force, which sets the friction load, travel in the contact history too).
 Usage: check_tangential_restart.py WORKDIR"""
 import os
 import shutil
@@ -69,4 +71,29 @@ c.true(len(rres) == len(rfull) - k0 and all(a[1:] == b[1:] for a, b in zip(rres,
        % len(rres))
 c.true(out["rough_np2"] == rfull, "rough spheres on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit"
        % len(rfull))
+
+# Maugis-Dugdale (jkr_elliptic adhesionLaw maugis): restart and 2 ranks
+md = {"dir": D, "nmodel": "jkr_elliptic", "nset": "adhesionLaw maugis", "cdf": 1.01, "x1": -0.001}
+for tag, ranks, extra in (("md_full", 1, {}), ("md_np2", 2, {}), ("md_half", 1, {"steps": STOP, "restart": 1})):
+    v = dict(md)
+    v.update(extra)
+    run("tangential_restart/in.tangential_restart", os.path.join(work, tag), ranks=ranks, variables=v, tag=tag)
+    out[tag] = rows(os.path.join(work, tag, "loop.txt"))
+os.makedirs(os.path.join(work, "md_resumed"), exist_ok=True)
+shutil.copy(os.path.join(work, "md_half", "loop.restart"), os.path.join(work, "md_resumed"))
+v = dict(md)
+v.update({"steps": 30000 - STOP})
+del v["x1"]
+run("tangential_restart/in.tangential_restart_resume", os.path.join(work, "md_resumed"), variables=v, tag="md_resumed")
+mfull, mres = out["md_full"], rows(os.path.join(work, "md_resumed", "loop.txt"))
+mf = [float(r[2]) for r in mfull]
+c.true(max(mf) > 1.001 * max(float(r[2]) for r in full),
+       "adhesive spheres: the law acts (the adhesive contact is larger: force amplitude %.4g N against %.4g N)"
+       % (max(mf), max(float(r[2]) for r in full)))
+c.true(out["md_half"] == mfull[:k0], "adhesive spheres: the first part equals the uninterrupted run")
+c.true(len(mres) == len(mfull) - k0 and all(a[1:] == b[1:] for a, b in zip(mres, mfull[k0:])),
+       "adhesive spheres, continued from the restart file: %d rows equal the uninterrupted run's digit for digit"
+       % len(mres))
+c.true(out["md_np2"] == mfull, "adhesive spheres on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit"
+       % len(mfull))
 c.finish()
