@@ -207,7 +207,7 @@ int dc_md_at_overlap(double lambda, double Dbar, int *contact, double *abar, dou
    from +inf (s -> 0: abar -> inf) to the abar -> 0 end (s -> inf), through
    a least value (the fold) where lambda is above about 0.93. */
 typedef struct {
-  double a, P, D, dD, da, dP, scale;   /* scale: the size of MD3's terms, for the residual */
+  double a, P, D, dD, da, dP;
 } md_point;
 
 static void md_at_s(double lambda, double s, md_point *p)
@@ -227,7 +227,6 @@ static void md_at_s(double lambda, double s, md_point *p)
   p->da = da;
   p->dD = 2.0 * a * da - l43 * (da * s + a);
   p->dP = 3.0 * a * a * da - lambda * a * (2.0 * da * w + 2.0 * a * (1.0 + s * t));   /* w' = 2 + 2 s arctan s */
-  p->scale = a * a + u;
 }
 
 int dc_md_branch_s(double lambda, double s, double *abar, double *Pbar, double *Dbar, double *dDds)
@@ -243,8 +242,20 @@ int dc_md_branch_s(double lambda, double s, double *abar, double *Pbar, double *
   return DC_OK;
 }
 
-/* c_z = 8 lambda / (3 pi), where the zone's overlap is least */
-static double md_cz(double lambda) { return 8.0 / (3.0 * M_PI) * lambda; }
+/* Where the zone-only states meet the contact branch: c_z = 8 lambda/(3 pi),
+   where the zone's overlap is least, and the branch end's cbar0, Dbar0;
+   1 where the zone is stable beyond the end (cbar0 > c_z) */
+typedef struct {
+  double cz, c0, D0;
+} md_ends;
+
+static int md_ends_of(double lambda, md_ends *e)
+{
+  double P0;
+  dc_md_state_zero(lambda, &e->c0, &P0, &e->D0);
+  e->cz = 8.0 / (3.0 * M_PI) * lambda;
+  return e->c0 > e->cz;
+}
 
 /* The fold: the s in (0, inf) where dDbar/ds changes sign (the first s =
    2^k, k from -40, with dDbar/ds >= 0, then bisection), or 0 where the
@@ -253,9 +264,8 @@ static double md_cz(double lambda) { return 8.0 / (3.0 * M_PI) * lambda; }
    the end and the branch has no fold (at its far end dDbar/ds is rounding) */
 static double md_fold_s(double lambda)
 {
-  double c0, P0, D0;
-  dc_md_state_zero(lambda, &c0, &P0, &D0);
-  if (c0 > md_cz(lambda)) return 0.0;
+  md_ends e;
+  if (md_ends_of(lambda, &e)) return 0.0;
   md_point p;
   double lo = 0.0, hi = 0.0;
   for (int k = -40; k <= 60; k++) {
@@ -322,11 +332,11 @@ static int md_solve(double lambda, double D, double sf, double s0, double *s, md
 int dc_md_zone(double lambda, double Dbar, int *zone, double *cbar, double *Pbar)
 {
   if (!lambda_ok(lambda) || !(fabs(Dbar) <= 1e30)) return DC_EDOM;
-  double c0, P0, D0;
-  dc_md_state_zero(lambda, &c0, &P0, &D0);
-  const double cz = md_cz(lambda), disc = cz * cz + 2.0 * (Dbar + 2.0 / (M_PI * lambda));
-  *zone = c0 > cz && disc >= 0.0 && Dbar <= D0;
-  const double c = *zone ? cz + sqrt(disc) : 0.0;   /* the stable root of Dbar(cbar) */
+  md_ends e;
+  const int stable = md_ends_of(lambda, &e);
+  const double disc = e.cz * e.cz + 2.0 * (Dbar + 2.0 / (M_PI * lambda));
+  *zone = stable && disc >= 0.0 && Dbar <= e.D0;
+  const double c = *zone ? e.cz + sqrt(disc) : 0.0;   /* the stable root of Dbar(cbar) */
   *cbar = c;
   *Pbar = -M_PI / 2.0 * lambda * c * c;
   return DC_OK;
@@ -335,10 +345,8 @@ int dc_md_zone(double lambda, double Dbar, int *zone, double *cbar, double *Pbar
 double dc_md_reach(double lambda)
 {
   if (!lambda_ok(lambda)) return NAN;
-  double c0, P0, D0;
-  dc_md_state_zero(lambda, &c0, &P0, &D0);
-  const double cz = md_cz(lambda);
-  return c0 > cz ? fmax(1.0, 0.5 * cz * cz + 2.0 / (M_PI * lambda)) : 1.0;
+  md_ends e;
+  return md_ends_of(lambda, &e) ? fmax(1.0, 0.5 * e.cz * e.cz + 2.0 / (M_PI * lambda)) : 1.0;
 }
 
 const dc_history_field dc_md_history[DC_MD_CONTACT_NFIELDS] = {
@@ -359,8 +367,9 @@ static int md_contact(double D, dc_md_contact *h, double s0, double *Pbar, doubl
       md_at_s(l, sfold, &p);
       Dsep = p.D;
     } else {
-      double c0, P0;
-      dc_md_state_zero(l, &c0, &P0, &Dsep);
+      md_ends e;
+      md_ends_of(l, &e);
+      Dsep = e.D0;
     }
   }
   double s;
@@ -416,12 +425,11 @@ int dc_md_step(double Dbar, dc_md_contact *h, double *Pbar, double *abar)
   if (t.phase == DC_MD_CONTACT) {   /* below the separation overlap */
     md_zone_or_apart(Dbar, &t, Pbar, abar);
   } else {
-    double c0, P0, D0;
-    dc_md_state_zero(l, &c0, &P0, &D0);
-    const double cz = md_cz(l);
+    md_ends e;
+    md_ends_of(l, &e);
     /* from apart the zone catches the jump where it is stable there; from the zone the
        contact forms where the overlap passes the branch's end */
-    const int to_contact = t.phase == DC_MD_ZONE ? Dbar > D0 : !(c0 >= 2.0 * cz && Dbar <= D0);
+    const int to_contact = t.phase == DC_MD_ZONE ? Dbar > e.D0 : !(e.c0 >= 2.0 * e.cz && Dbar <= e.D0);
     if (to_contact) st = md_contact(Dbar, &t, 0.0, Pbar, abar);
     else md_zone_or_apart(Dbar, &t, Pbar, abar);
   }
