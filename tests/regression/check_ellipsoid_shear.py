@@ -18,7 +18,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import elliptic_contact, mindlin_ellipse, run, start, table
+from regress import elliptic_contact, mindlin_ellipse, mindlin_ellipse_force, run, start, table
 
 work, _, c = start()
 E, nu, mu, s, d0 = 5e6, 0.3, 0.5, 2e-7, 5e-6
@@ -37,12 +37,9 @@ for tmodel in ("cmd_tangential", "history"):
     runs[tmodel] = table(os.path.join(d, "shear.txt"))
 angle = lambda fx, fy, sx, sy: (math.degrees(math.atan2(fy, fx) - math.atan2(-sy, -sx)) + 180.0) % 360.0 - 180.0
 for r, h in zip(runs["cmd_tangential"], runs["history"]):
-    ang = math.radians(r[1])
-    sx, sy = s * math.cos(ang), s * math.sin(ang)
-    wx, wy = k_major * sx, k_minor * sy
-    wl = math.hypot(wx, wy)
-    F = mu * Fn * (1 - (1 - 2 * wl / (3 * mu * Fn)) ** 1.5)
-    want = (-F * wx / wl, -F * wy / wl)
+    Fx, Fy, F = mindlin_ellipse_force(k_major, k_minor, s, r[1], mu * Fn)
+    want = (Fx, Fy)
+    sx, sy = s * math.cos(math.radians(r[1])), s * math.sin(math.radians(r[1]))   # the displacement, for the printout
     c.rel(r[7], Fn, 1e-9, "%g deg: normal force vs elliptic Hertz" % r[1])
     err = math.hypot(r[5] - want[0], r[6] - want[1]) / F
     c.true(err < 1e-6, "%g deg: tangential force (%.6g, %.6g) N vs Mindlin with micro-slip (%.6g, %.6g): %.3g (tol 1e-6)"

@@ -40,7 +40,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.join(os.path.dirname(HERE), "reference"))
-from regress import ROOT, compare_tables, run, save_reference, start, table  # noqa: E402
+from regress import ROOT, compare_tables, mindlin_virgin, run, save_reference, start, table  # noqa: E402
 import gen_rolling_creep as law  # noqa: E402
 
 work, update, c = start()
@@ -200,7 +200,7 @@ for shape in ("sphere", "disc"):
             if shape == "sphere":
                 k0 = 8 * GSTAR * x["a"]
                 muF = MU * x["Fn"]
-                want = muF * (1 - (1 - 2 * k0 * X / (3 * muF)) ** 1.5)
+                want = mindlin_virgin(k0 * X, muF)
                 what = "cmd_tangential's Mindlin loading curve"
             else:
                 want = 8 * GSTAR * x["a"] * X

@@ -23,7 +23,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from regress import ROOT, elliptic_contact, mindlin_ellipse, run, start, table
+from regress import ROOT, elliptic_contact, mindlin_ellipse, mindlin_ellipse_force, mindlin_virgin, run, start, table
 
 work, _, c = start()
 E, nu, mu, R = 5e6, 0.3, 0.5, 1e-3
@@ -117,12 +117,8 @@ for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
     for r in table(os.path.join(d, "shear.txt")):
         if r[0] > 3:   # the pair, below
             continue
-        ang = math.radians(r[1])
-        sx, sy = s * math.cos(ang), s * math.sin(ang)
-        wx, wy = k_major * sx, k_minor * sy
-        wl = math.hypot(wx, wy)
-        Ft = mu * Fn * (1 - (1 - 2 * wl / (3 * mu * Fn)) ** 1.5)
-        want = (-Ft * wx / wl, -Ft * wy / wl)
+        Fx, Fy, Ft = mindlin_ellipse_force(k_major, k_minor, s, r[1], mu * Fn)
+        want = (Fx, Fy)
         tag = "ellipsoid, h %s, %g deg" % (h, r[1])
         c.rel(r[7], Fn, 1e-9, "%s: normal force vs the GW closed form" % tag)
         err = math.hypot(r[5] - want[0], r[6] - want[1]) / Ft
@@ -137,7 +133,7 @@ for sig, d0, h in (("1e-6", "5e-6", "-5"), ("1e-6", "-1e-6", "1")):
     hp = {"5e-6": "-5/sqrt2", "-1e-6": "1/sqrt2"}[d0]
     a_rp, gp, Fnp = summits(0.5 * c2 ** 2 / a2, 0.5 * b2 ** 2 / a2, math.sqrt(2) * sigma, *F[hp])
     k_minor_p = mindlin_ellipse(a_rp, gp, nu, G)[1]
-    Ftp = mu * Fnp * (1 - (1 - 2 * k_minor_p * s / (3 * mu * Fnp)) ** 1.5)
+    Ftp = mindlin_virgin(k_minor_p * s, mu * Fnp)
     rows_p = {int(r[0]): r for r in table(os.path.join(d, "shear.txt")) if r[0] > 3}
     r4, r5 = rows_p[4], rows_p[5]
     Mx, My = 0.5 * (r5[2] - r4[2]), 0.5 * (r5[3] - r4[3])   # the midpoint from atom 4's centre

@@ -44,56 +44,47 @@ c.true(half == full[:k0], "the first part equals the uninterrupted run (%d rows)
 same = len(res) == len(full) - k0 and all(a[1:] == b[1:] for a, b in zip(res, full[k0:]))
 c.true(same, "continued from the restart file: %d rows equal the uninterrupted run's digit for digit" % len(res))
 
+def restarted(prefix, variables):
+    """The deck with `variables` run whole on 1 and on 2 ranks, and stopped
+    at STOP then resumed from its restart file: the rows of (whole, 2 ranks,
+    first part, resumed part)."""
+    out = {}
+    for tag, ranks, extra in (("full", 1, {}), ("np2", 2, {}), ("half", 1, {"steps": STOP, "restart": 1})):
+        v = dict(variables, **extra)
+        run("tangential_restart/in.tangential_restart", os.path.join(work, prefix + tag), ranks=ranks, variables=v,
+            tag=prefix + tag)
+        out[tag] = rows(os.path.join(work, prefix + tag, "loop.txt"))
+    d = os.path.join(work, prefix + "resumed")
+    os.makedirs(d, exist_ok=True)
+    shutil.copy(os.path.join(work, prefix + "half", "loop.restart"), d)
+    v = {k: x for k, x in variables.items() if k != "x1"}
+    v["steps"] = 30000 - STOP
+    run("tangential_restart/in.tangential_restart_resume", d, variables=v, tag=prefix + "resumed")
+    return out["full"], out["np2"], out["half"], rows(os.path.join(d, "loop.txt"))
+
+
+def same_runs(what, whole, np2, half, resumed):
+    c.true(half == whole[:k0], "%s: the first part equals the uninterrupted run" % what)
+    c.true(len(resumed) == len(whole) - k0 and all(a[1:] == b[1:] for a, b in zip(resumed, whole[k0:])),
+           "%s, continued from the restart file: %d rows equal the uninterrupted run's digit for digit"
+           % (what, len(resumed)))
+    c.true(np2 == whole, "%s on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit" % (what, len(whole)))
+
+
 # rough spheres, tangentialRoughness on: restart and 2 ranks
-rough = {"dir": D, "nmodel": "gw_rough", "nset": "gwElliptic on tangentialRoughness on", "sigma": 1e-6,
-         "cdf": 1.01, "x1": -0.001}
-out = {}
-for tag, ranks, extra in (("rough_full", 1, {}), ("rough_np2", 2, {}), ("rough_half", 1, {"steps": STOP, "restart": 1})):
-    v = dict(rough)
-    v.update(extra)
-    run("tangential_restart/in.tangential_restart", os.path.join(work, tag), ranks=ranks, variables=v, tag=tag)
-    out[tag] = rows(os.path.join(work, tag, "loop.txt"))
-os.makedirs(os.path.join(work, "rough_resumed"), exist_ok=True)
-shutil.copy(os.path.join(work, "rough_half", "loop.restart"), os.path.join(work, "rough_resumed"))
-v = dict(rough)
-v.update({"steps": 30000 - STOP})
-del v["x1"]
-run("tangential_restart/in.tangential_restart_resume", os.path.join(work, "rough_resumed"), variables=v,
-    tag="rough_resumed")
-rfull, rres = out["rough_full"], rows(os.path.join(work, "rough_resumed", "loop.txt"))
-rf = [float(r[2]) for r in rfull]
+rough = restarted("rough_", {"dir": D, "nmodel": "gw_rough", "nset": "gwElliptic on tangentialRoughness on",
+                             "sigma": 1e-6, "cdf": 1.01, "x1": -0.001})
+rf = [float(r[2]) for r in rough[0]]
 c.true(max(abs(a - b) for a, b in zip(rf, fs + [float(r[2]) for r in full[k0:]])) > 1e-3 * max(rf),
        "rough spheres: the summits' law differs from the smooth one (force amplitude %.4g N against %.4g N)"
        % (max(rf), max(float(r[2]) for r in full)))
-c.true(out["rough_half"] == rfull[:k0], "rough spheres: the first part equals the uninterrupted run")
-c.true(len(rres) == len(rfull) - k0 and all(a[1:] == b[1:] for a, b in zip(rres, rfull[k0:])),
-       "rough spheres, continued from the restart file: %d rows equal the uninterrupted run's digit for digit"
-       % len(rres))
-c.true(out["rough_np2"] == rfull, "rough spheres on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit"
-       % len(rfull))
+same_runs("rough spheres", *rough)
 
 # Maugis-Dugdale (jkr_elliptic adhesionLaw maugis): restart and 2 ranks
-md = {"dir": D, "nmodel": "jkr_elliptic", "nset": "adhesionLaw maugis", "cdf": 1.01, "x1": -0.001}
-for tag, ranks, extra in (("md_full", 1, {}), ("md_np2", 2, {}), ("md_half", 1, {"steps": STOP, "restart": 1})):
-    v = dict(md)
-    v.update(extra)
-    run("tangential_restart/in.tangential_restart", os.path.join(work, tag), ranks=ranks, variables=v, tag=tag)
-    out[tag] = rows(os.path.join(work, tag, "loop.txt"))
-os.makedirs(os.path.join(work, "md_resumed"), exist_ok=True)
-shutil.copy(os.path.join(work, "md_half", "loop.restart"), os.path.join(work, "md_resumed"))
-v = dict(md)
-v.update({"steps": 30000 - STOP})
-del v["x1"]
-run("tangential_restart/in.tangential_restart_resume", os.path.join(work, "md_resumed"), variables=v, tag="md_resumed")
-mfull, mres = out["md_full"], rows(os.path.join(work, "md_resumed", "loop.txt"))
-mf = [float(r[2]) for r in mfull]
+md = restarted("md_", {"dir": D, "nmodel": "jkr_elliptic", "nset": "adhesionLaw maugis", "cdf": 1.01, "x1": -0.001})
+mf = [float(r[2]) for r in md[0]]
 c.true(max(mf) > 1.001 * max(float(r[2]) for r in full),
        "adhesive spheres: the law acts (the adhesive contact is larger: force amplitude %.4g N against %.4g N)"
        % (max(mf), max(float(r[2]) for r in full)))
-c.true(out["md_half"] == mfull[:k0], "adhesive spheres: the first part equals the uninterrupted run")
-c.true(len(mres) == len(mfull) - k0 and all(a[1:] == b[1:] for a, b in zip(mres, mfull[k0:])),
-       "adhesive spheres, continued from the restart file: %d rows equal the uninterrupted run's digit for digit"
-       % len(mres))
-c.true(out["md_np2"] == mfull, "adhesive spheres on 2 ranks (one sphere each): %d rows equal 1 rank digit for digit"
-       % len(mfull))
+same_runs("adhesive spheres", *md)
 c.finish()

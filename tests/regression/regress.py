@@ -221,6 +221,25 @@ def mindlin_ellipse(a, g, nu, G):
     return 2 * math.pi * a / (2 * ((1 - nu) * K + nu * D) / G), 2 * math.pi * a / (2 * (K - nu * D) / G)
 
 
+def mindlin_virgin(w, muFn):
+    """Mindlin's first-loading tangential force (review Eq. 59) for the
+    elastic (no-slip) force w = |K0 s| below gross sliding:
+    mu Fn [1 - (1 - 2 w / (3 mu Fn))^3/2]."""
+    return muFn * (1 - (1 - 2 * w / (3 * muFn)) ** 1.5)
+
+
+def mindlin_ellipse_force(k_major, k_minor, s, angle_deg, muFn):
+    """Eq. 59 on a contact ellipse: a displacement s at angle_deg from the
+    major axis, the elastic force K0 s = (k_major s_x, k_minor s_y); the
+    force opposes K0 s with magnitude mindlin_virgin(|K0 s|). Returns
+    (F_x, F_y, |F|)."""
+    ang = math.radians(angle_deg)
+    wx, wy = k_major * s * math.cos(ang), k_minor * s * math.sin(ang)
+    wl = math.hypot(wx, wy)
+    F = mindlin_virgin(wl, muFn)
+    return -F * wx / wl, -F * wy / wl, F
+
+
 def relative_radii(k1I, k2I, k1II, k2II, w):
     """Relative principal radii from the principal curvatures of two bodies
     whose principal directions make the angle w (review Eqs. 3-4)."""
