@@ -29,6 +29,7 @@ Exit status 0; 2 with a message naming the deck line for a deck it cannot
 read.
 """
 import ast
+import collections
 import csv
 import io
 import math
@@ -501,9 +502,8 @@ def report_costs():
             "gw_rough": ("rough", "tabulated GW law (gw_rough default)"),
             "jkr_elliptic": ("adhesion", "jkr_elliptic (hint carried)"),
             "jkr_elliptic adhesionLaw dmt": ("adhesion", "adhesionLaw dmt (DMT)"),
-            "jkr_elliptic adhesionLaw maugis": ("adhesion", "adhesionLaw maugis (Maugis-Dugdale)"),
-            "cmd_tangential": ("tangential", "cmd_tangential"),
-            "tangential history": ("tangential", "stock tangential history")}
+            "jkr_elliptic adhesionLaw maugis": ("adhesion", "adhesionLaw maugis (Maugis-Dugdale)")}
+    pick.update({law.name: law.report for law in TANGENTIAL_LAWS})
     return {m: cost.get(k) for m, k in pick.items()}
 
 
@@ -511,15 +511,38 @@ def fmt(x):
     return "%.3g" % x
 
 
-def advise(deck, opts, out):
-    dclaw = opts.dclaw
-    parts, v, g, src = scene_of(deck, opts)
-    dt, dt_where = deck.dt
-    costs = report_costs()
-    cost = lambda m: ("%.2fx" % costs[m]) if costs.get(m) else "n/a in the report"
-    tol = opts.tol
-    rows, warnings, measures, cdf_need = [], [], [], []
-    # contact kinds: every pair of particle classes, and each on the walls
+# ------------------------------------------------------------ the contacts
+
+class Scene:
+    """What every contact of the deck shares: the particle classes, the
+    largest impact speed, gravity, the time step, the tolerance, the costs
+    from the report, and the warnings and contact distance factors the
+    effects hand on (one list for the whole deck)."""
+
+    def __init__(self, deck, opts):
+        self.opts, self.dclaw, self.tol = opts, opts.dclaw, opts.tol
+        self.parts, self.v, self.g, self.src = scene_of(deck, opts)
+        self.dt, self.dt_where = deck.dt
+        self.costs = report_costs()
+        self.warnings, self.cdf_need = [], []
+
+    def measure_shapes(self):
+        """a superquadric class: its volume-equivalent radius and one-radius force errors, once"""
+        for d in self.parts:
+            s = shape_of(d)
+            if s:
+                (sx, sy, sz), (n1, n2) = s
+                d["shape_errors"] = run_dclaw(self.dclaw, ["shape", "--a", sx, "--b", sy, "--c", sz, "--n1", n1,
+                                                           "--n2", n2])
+                d["radius"] = d["shape_errors"]["R_eq"]
+
+    def cost(self, model):
+        """the cost column: the report's whole-run ratio of the model"""
+        return ("%.2fx" % self.costs[model]) if self.costs.get(model) else "n/a in the report"
+
+
+def contact_kinds(deck, parts):
+    """Every pair of particle classes, then each class on the walls (walls of the last wall/gran line's type)."""
     kinds = [(i, j) for i in range(len(parts)) for j in range(i, len(parts))]
     wall_type = 1
     if deck.walls:
@@ -527,165 +550,329 @@ def advise(deck, opts, out):
             if "type" in words:
                 wall_type = int(float(words[words.index("type") + 1]))
         kinds += [(i, "wall") for i in range(len(parts))]
-    model_line = " ".join(deck.pair[0][2:]) if deck.pair else "(no pair_style gran)"
-    # a superquadric class: its volume-equivalent radius and one-radius force errors, once
-    for d in parts:
-        s = shape_of(d)
-        if s:
-            (sx, sy, sz), (n1, n2) = s
-            d["shape_errors"] = run_dclaw(dclaw, ["shape", "--a", sx, "--b", sy, "--c", sz, "--n1", n1, "--n2", n2])
-            d["radius"] = d["shape_errors"]["R_eq"]
-    for (ia, ib) in kinds:
-        da = parts[ia]
-        wall = ib == "wall"
-        db = None if wall else parts[ib]
+    return kinds, wall_type
+
+
+class Contact:
+    """One contact kind: its bodies and materials as the deck gives them,
+    and dclaw scene's measures of it (m, one row of the --csv output).
+    needs: each effect's verdict so far, for the effects after it (the
+    tangential deck line reads whether roughness needs gw_rough)."""
+
+    def __init__(self, deck, s, ia, ib, wall_type):
+        opts = s.opts
+        self.s = s
+        self.tol, self.v, self.dt = s.tol, s.v, s.dt
+        da = s.parts[ia]
+        self.wall = wall = ib == "wall"
+        db = None if wall else s.parts[ib]
         a = da["type"]
         bt = wall_type if wall else db["type"]
-        reach_R = da["radius"] + (0.0 if wall else db["radius"])   # the radius the contact distance scales
-        shape_rows = [d["shape_errors"] for d in ([da] if wall else [da, db]) if "shape_errors" in d]
+        self.reach_R = da["radius"] + (0.0 if wall else db["radius"])   # the radius the contact distance scales
+        self.shape_rows = [d["shape_errors"] for d in ([da] if wall else [da, db]) if "shape_errors" in d]
         E1, nu1 = prop(deck, "youngsModulus", a), prop(deck, "poissonsRatio", a)
         E2, nu2 = prop(deck, "youngsModulus", bt), prop(deck, "poissonsRatio", bt)
-        mu = prop(deck, "coefficientFriction", a, bt, required=False, default=0.0)
-        w = prop(deck, "workOfAdhesion", a, bt, required=False, default=opts.w or 0.0)
+        self.mu = mu = prop(deck, "coefficientFriction", a, bt, required=False, default=0.0)
+        self.w = w = prop(deck, "workOfAdhesion", a, bt, required=False, default=opts.w or 0.0)
         sig_a = prop(deck, "surfaceRoughness", a, required=False, default=None)
         sig_b = prop(deck, "surfaceRoughness", bt, required=False, default=None)
         sigma = math.hypot(sig_a, sig_b) if sig_a is not None and sig_b is not None else (opts.sigma or 0.0)
+        self.sigma = sigma
         mu_r = prop(deck, "roughnessMu", a, bt, required=False, default=4.0)
         H = prop(deck, "hardness", a, required=False, default=None)
         if H is not None and prop(deck, "hardness", bt, required=False, default=None) is not None:
             H = min(H, prop(deck, "hardness", bt))
-        H = H if H is not None else (opts.H or 0.0)
+        self.H = H = H if H is not None else (opts.H or 0.0)
         args = ["scene", "--R1", da["radius"], "--R2", 0 if wall else db["radius"], "--E1", E1, "--E2", E2,
                 "--nu1", nu1, "--nu2", nu2, "--rho1", da["density"], "--rho2", da["density"] if wall else db["density"],
-                "--v", v, "--g", g, "--dt", dt, "--mu", mu, "--w", w, "--z0", opts.z0, "--sigma", sigma,
+                "--v", s.v, "--g", s.g, "--dt", s.dt, "--mu", mu, "--w", w, "--z0", opts.z0, "--sigma", sigma,
                 "--mu_rough", mu_r, "--H", H]
-        m = run_dclaw(dclaw, args)
-        m.update({"in_nu": nu1, "in_sigma": sigma, "in_w": w, "in_H": H, "in_mu_rough": mu_r, "in_mu": mu, "in_v": v})
-        kind = "%s on a wall" % da["label"] if wall else "%s with %s" % (da["label"], db["label"])
-        m["kind"] = kind
-        measures.append(m)
-        R = lambda eff, meas, need, c, lines: rows.append((kind, eff, meas, need, c, lines))
-        # time step: the elastic Hertz collision at the largest speed integrated at the deck's dt
-        steps = max(1, int(m["t_c"] / dt))
-        hz = run_dclaw(dclaw, ["classical", "--law", 1, "--damping", 4, "--Estar", m["Estar"], "--R", m["R"],
+        self.m = m = run_dclaw(s.dclaw, args)
+        m.update({"in_nu": nu1, "in_sigma": sigma, "in_w": w, "in_H": H, "in_mu_rough": mu_r, "in_mu": mu, "in_v": s.v})
+        self.kind = "%s on a wall" % da["label"] if wall else "%s with %s" % (da["label"], db["label"])
+        m["kind"] = self.kind
+        self.needs = {}
+
+
+# ------------------------------------------------------------ the effects
+#
+# One function per physical effect, in doc/advisor.md's order ("The
+# measures"): each takes a Contact, takes or computes its measure, applies
+# its rule and returns its verdict, an Advice (the row printed for the
+# contact); warnings and the contact distance factor an advised law needs
+# go to the scene (c.s.warnings, c.s.cdf_need). EFFECTS lists them as they
+# print: a new effect is one more function and one more entry there (and,
+# if the deck's pair_style may lack or pay for its law, one in DECK_CHECKS).
+
+class Advice(collections.namedtuple("Advice", "measure needs cost line")):
+    """measure: the figures, for reading; needs: the model the contact
+    needs ("-" where not assessed); cost: its cost column; line: the deck
+    line for it ("-": none)."""
+
+
+def not_assessed(measure):
+    return Advice(measure, "-", "-", "-")
+
+
+def effect_time_step(c):
+    """the elastic Hertz collision at the largest speed integrated at the deck's dt; LIGGGHTS' Rayleigh limit"""
+    m, dt, v, tol = c.m, c.dt, c.v, c.tol
+    steps = max(1, int(m["t_c"] / dt))
+    hz = run_dclaw(c.s.dclaw, ["classical", "--law", 1, "--damping", 4, "--Estar", m["Estar"], "--R", m["R"],
                                "--meff", m["meff"], "--v0", v, "--steps", steps, "--summary", 1])
-        t_err = abs(hz["Tc"] / hz["Tc_closed"] - 1.0)
-        e_err = abs(hz["e"] - 1.0)
-        m["duration_error"], m["restitution_error"] = t_err, e_err
-        ok = m["dt_over_T_rayleigh"] <= 0.2 and max(t_err, e_err) <= tol
-        R("time step", "dt %s s = %s Rayleigh times; %d steps per collision at %s m/s: duration off by %s, elastic "
-          "restitution by %s" % (fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps, fmt(v), fmt(t_err), fmt(e_err)),
-          "ok" if ok else "smaller dt", "-", "-" if ok else "timestep %s" % fmt(min(0.2 * m["T_rayleigh"], m["t_c"] / 50)))
-        if not ok:
-            warnings.append("%s (%s): dt = %s s is %s Rayleigh times (LIGGGHTS' limit 0.2) and integrates the fastest "
-                            "collision in %d steps, its duration off by %s and its elastic restitution by %s (tolerance "
-                            "%s)" % (kind, dt_where, fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps, fmt(t_err),
-                                     fmt(e_err), fmt(tol)))
-        # Hertz range
-        R("Hertz range", "a/R at impact %s (Fessler-Ollerton: below 0.5)" % fmt(m["fessler"]),
-          "ok" if m["fessler"] <= 0.5 else "beyond Hertz", "-", "-")
-        if m["fessler"] > 0.5:
-            warnings.append("%s: the impact's contact radius is %s of the particle radius: beyond Hertz's range "
+    t_err = abs(hz["Tc"] / hz["Tc_closed"] - 1.0)
+    e_err = abs(hz["e"] - 1.0)
+    m["duration_error"], m["restitution_error"] = t_err, e_err
+    ok = m["dt_over_T_rayleigh"] <= 0.2 and max(t_err, e_err) <= tol
+    if not ok:
+        c.s.warnings.append("%s (%s): dt = %s s is %s Rayleigh times (LIGGGHTS' limit 0.2) and integrates the "
+                            "fastest collision in %d steps, its duration off by %s and its elastic restitution by %s "
+                            "(tolerance %s)" % (c.kind, c.s.dt_where, fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps,
+                                                fmt(t_err), fmt(e_err), fmt(tol)))
+    return Advice("dt %s s = %s Rayleigh times; %d steps per collision at %s m/s: duration off by %s, elastic "
+                  "restitution by %s" % (fmt(dt), fmt(m["dt_over_T_rayleigh"]), steps, fmt(v), fmt(t_err), fmt(e_err)),
+                  "ok" if ok else "smaller dt", "-",
+                  "-" if ok else "timestep %s" % fmt(min(0.2 * m["T_rayleigh"], m["t_c"] / 50)))
+
+
+def effect_hertz_range(c):
+    """a/R at the impact's largest overlap against Fessler & Ollerton's 0.5: a warning, no law fixes it"""
+    fessler = c.m["fessler"]
+    if fessler > 0.5:
+        c.s.warnings.append("%s: the impact's contact radius is %s of the particle radius: beyond Hertz's range "
                             "(0.5, Fessler-Ollerton); a softer law does not fix it, a stiffer material or slower "
-                            "impact does" % (kind, fmt(m["fessler"])))
-        # shape
-        if shape_rows:
-            err = max(r["err_pair_max" if not wall else "err_wall_max"] for r in shape_rows)
-            rms = max(r["err_pair_rms" if not wall else "err_wall_rms"] for r in shape_rows)
-            m["shape_error_max"], m["shape_error_rms"] = err, rms
-            need = "hertz_elliptic" if err > tol else "hertz (volume-equivalent radius)"
-            R("shape", "one-radius force error max %s, rms %s" % (fmt(err), fmt(rms)), need,
-              cost("hertz_elliptic") if err > tol else "1x",
-              "pair_style gran model hertz_elliptic ... surface superquadric" if err > tol else "-")
-        else:
-            R("shape", "spheres: 0", "hertz", "1x", "-")
-        # plasticity
-        if H > 0:
-            pr = m["plastic_ratio"]
-            change = 1.0 - m["e_plastic"]
-            need = "jamari_ep" if change > tol else "elastic law"
-            R("plasticity", "impact over yield speed %s (delta_max/delta_n1 %s); restitution from plasticity alone %s"
-              % (fmt(v / m["v_yield"]), fmt(pr), fmt(m["e_plastic"])),
-              need, cost("jamari_ep") if change > tol else "1x",
-              "model jamari_ep; fix ... property/global hardness peratomtype %s" % fmt(H) if change > tol else "-")
-        else:
-            R("plasticity", "not assessed: no hardness in the deck (give --H)", "-", "-", "-")
-        # adhesion
-        if w > 0:
-            tab = m["tabor"]
-            po_w = m["pulloff_over_weight"]
-            need = "elastic law"
-            sticks = v < m["v_stick"]
-            dmt = tab < 0.1
-            md = 0.1 <= tab < 5
-            if po_w > tol or m["pulloff_over_F_max"] > tol or sticks:
-                need = ("jkr_elliptic adhesionLaw dmt" if dmt else "jkr_elliptic" if tab >= 5 else
-                        "jkr_elliptic adhesionLaw maugis (Tabor %s: between JKR and DMT)" % fmt(tab))
-            R("adhesion", "Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force; sticking speed %s m/s "
-              "(impact %s of it: %s)" % (fmt(tab), fmt(m["pulloff"]), fmt(po_w), fmt(m["pulloff_over_F_max"]),
-                                         fmt(m["v_stick"]), fmt(v / m["v_stick"]), "sticks" if sticks else "rebounds"),
-              need,
-              cost("jkr_elliptic adhesionLaw dmt" if dmt else "jkr_elliptic adhesionLaw maugis" if md else "jkr_elliptic")
-              if need != "elastic law" else "1x",
-              "model jkr_elliptic%s; fix ... property/global workOfAdhesion peratomtypepair ...%s"
-              % (" adhesionLaw dmt" if dmt else " adhesionLaw maugis" if md else "",
-                 "; fix ... property/global equilibriumSeparation peratomtypepair ... (z0 %s m)" % fmt(opts.z0) if md else "")
-              if need != "elastic law" else "-")
-            if need != "elastic law" and not dmt:   # a DMT contact ends at touch: no neck to reach
-                cdf_need.append(1.0 + (m["md_reach"] if md else m["jkr_separation"]) / reach_R)
-        else:
-            R("adhesion", "not assessed: no workOfAdhesion in the deck (give --w)", "-", "-", "-")
-        # roughness
-        rough_needed = False
-        if sigma > 0:
-            ch = max(abs(m["rough_force_rest"]), abs(m["rough_force_max"]))
-            need = "gw_rough" if ch > tol else "smooth law"
-            R("roughness", "sigma/delta %s at rest, %s at impact; rough force / Hertz - 1: %s at rest, %s at impact" % (
-                fmt(m["sigma_over_delta_rest"]), fmt(m["sigma_over_delta_max"]), fmt(m["rough_force_rest"]),
-                fmt(m["rough_force_max"])), need, cost("gw_rough") if ch > tol else "1x",
-              "model gw_rough; fix ... property/global surfaceRoughness peratomtype ..." if ch > tol else "-")
-            if ch > tol:
-                rough_needed = True
-                cdf_need.append(1.0 + m["rough_reach"] / reach_R)
-        else:
-            R("roughness", "not assessed: no surfaceRoughness in the deck (give --sigma)", "-", "-", "-")
-        # tangential memory: an oblique impact (tangential speed = normal speed) under both laws
-        if mu > 0:
-            change = abs(m["beta_cmd"] - m["beta_history"])
-            need = "cmd_tangential" if change > tol else "tangential history"
-            R("tangential memory", "tangential restitution of a 45-degree impact: %s with spring-sliding, %s with "
-              "Cattaneo-Mindlin (slip distance %s m, one impact moves %s of them)" % (
-                  fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
-              need, cost(need), "tangential history" if need != "cmd_tangential" else
-              "tangential cmd_tangential tangentialRoughness on  (the summits' stiffness, with gw_rough)"
-              if rough_needed else "tangential cmd_tangential")
-        else:
-            R("tangential memory", "no friction (coefficientFriction 0 or absent)", "-", "-", "-")
-        # rolling: how far an impact's contact rolls, against Kalker's hand-over (rollingDistanceMin 2 semi-axes)
-        if mu > 0:
-            X = m["rolled_semi_axes"]
-            R("rolling", "a 45-degree impact rolls its contact %s semi-axes; rolling_friction kalker acts after 2 "
-              "(rollingDistanceMin)%s" % (fmt(X), ": not in impacts; steady rolling over many semi-axes is not assessed"
-                                          if X < 2 else ""),
-              "no rolling model for impacts" if X < 2 else "rolling_friction kalker where contacts roll", "-", "-")
-        else:
-            R("rolling", "no friction: no creep forces", "-", "-", "-")
-        # models acting apart: the contact distance they need (the set-up refuses less)
-        models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}
-        jkr_gap = max(m["jkr_separation"], m["md_reach"]) if models & {"maugis", "tabor"} else m["jkr_separation"]
-        for law, gap, on in (("jkr_elliptic", jkr_gap, w > 0), ("gw_rough", m["rough_reach"], sigma > 0)):
-            need_cdf = 1.0 + gap / reach_R
-            m["contact_distance_factor_" + law] = need_cdf
-            if on and law in models and deck.cdf[0] < need_cdf:
-                warnings.append("%s: %s acts until the surfaces are %s m apart: neigh_modify contact_distance_factor "
-                                "%s (%s) is below the %s it needs" % (kind, law, fmt(gap), fmt(deck.cdf[0]), deck.cdf[1],
-                                                                      fmt(need_cdf)))
-    # ---- print
+                            "impact does" % (c.kind, fmt(fessler)))
+    return Advice("a/R at impact %s (Fessler-Ollerton: below 0.5)" % fmt(fessler),
+                  "ok" if fessler <= 0.5 else "beyond Hertz", "-", "-")
+
+
+def effect_shape(c):
+    """the one-radius Hertz force against elliptic Hertz (dclaw shape's errors of the superquadric classes)"""
+    if not c.shape_rows:
+        return Advice("spheres: 0", "hertz", "1x", "-")
+    err = max(r["err_pair_max" if not c.wall else "err_wall_max"] for r in c.shape_rows)
+    rms = max(r["err_pair_rms" if not c.wall else "err_wall_rms"] for r in c.shape_rows)
+    c.m["shape_error_max"], c.m["shape_error_rms"] = err, rms
+    if err > c.tol:
+        return Advice("one-radius force error max %s, rms %s" % (fmt(err), fmt(rms)), "hertz_elliptic",
+                      c.s.cost("hertz_elliptic"), "pair_style gran model hertz_elliptic ... surface superquadric")
+    return Advice("one-radius force error max %s, rms %s" % (fmt(err), fmt(rms)), "hertz (volume-equivalent radius)",
+                  "1x", "-")
+
+
+def effect_plasticity(c):
+    """the restitution of the elastic-plastic impact alone (Jamari-Schipper) against 1"""
+    if not c.H > 0:
+        return not_assessed("not assessed: no hardness in the deck (give --H)")
+    m = c.m
+    measure = ("impact over yield speed %s (delta_max/delta_n1 %s); restitution from plasticity alone %s"
+               % (fmt(c.v / m["v_yield"]), fmt(m["plastic_ratio"]), fmt(m["e_plastic"])))
+    if 1.0 - m["e_plastic"] > c.tol:
+        return Advice(measure, "jamari_ep", c.s.cost("jamari_ep"),
+                      "model jamari_ep; fix ... property/global hardness peratomtype %s" % fmt(c.H))
+    return Advice(measure, "elastic law", "1x", "-")
+
+
+def adhesion_law(tabor):
+    """the adhesive law for a Tabor parameter: (its name in the cost table, the words after `model jkr_elliptic`)"""
+    if tabor < 0.1:
+        return "jkr_elliptic adhesionLaw dmt", " adhesionLaw dmt"
+    if tabor < 5:
+        return "jkr_elliptic adhesionLaw maugis", " adhesionLaw maugis"
+    return "jkr_elliptic", ""
+
+
+def effect_adhesion(c):
+    """the JKR pull-off against the weight and the impact force, and the sticking speed; the law by Tabor's parameter"""
+    if not c.w > 0:
+        return not_assessed("not assessed: no workOfAdhesion in the deck (give --w)")
+    m, v, tol = c.m, c.v, c.tol
+    tab = m["tabor"]
+    sticks = v < m["v_stick"]
+    measure = ("Tabor %s; JKR pull-off %s N = %s weights, %s of the impact force; sticking speed %s m/s "
+               "(impact %s of it: %s)" % (fmt(tab), fmt(m["pulloff"]), fmt(m["pulloff_over_weight"]),
+                                          fmt(m["pulloff_over_F_max"]), fmt(m["v_stick"]), fmt(v / m["v_stick"]),
+                                          "sticks" if sticks else "rebounds"))
+    if not (m["pulloff_over_weight"] > tol or m["pulloff_over_F_max"] > tol or sticks):
+        return Advice(measure, "elastic law", "1x", "-")
+    law, words = adhesion_law(tab)
+    dmt, md = law.endswith("dmt"), law.endswith("maugis")
+    need = "jkr_elliptic adhesionLaw maugis (Tabor %s: between JKR and DMT)" % fmt(tab) if md else law
+    if not dmt:   # a DMT contact ends at touch: no neck to reach
+        c.s.cdf_need.append(1.0 + (m["md_reach"] if md else m["jkr_separation"]) / c.reach_R)
+    return Advice(measure, need, c.s.cost(law),
+                  "model jkr_elliptic%s; fix ... property/global workOfAdhesion peratomtypepair ...%s"
+                  % (words, "; fix ... property/global equilibriumSeparation peratomtypepair ... (z0 %s m)"
+                     % fmt(c.s.opts.z0) if md else ""))
+
+
+def effect_roughness(c):
+    """the rough-sphere law (tabulated GW) over Hertz at the overlaps at rest and at impact"""
+    if not c.sigma > 0:
+        return not_assessed("not assessed: no surfaceRoughness in the deck (give --sigma)")
+    m = c.m
+    measure = ("sigma/delta %s at rest, %s at impact; rough force / Hertz - 1: %s at rest, %s at impact"
+               % (fmt(m["sigma_over_delta_rest"]), fmt(m["sigma_over_delta_max"]), fmt(m["rough_force_rest"]),
+                  fmt(m["rough_force_max"])))
+    if max(abs(m["rough_force_rest"]), abs(m["rough_force_max"])) > c.tol:
+        c.s.cdf_need.append(1.0 + m["rough_reach"] / c.reach_R)
+        return Advice(measure, "gw_rough", c.s.cost("gw_rough"),
+                      "model gw_rough; fix ... property/global surfaceRoughness peratomtype ...")
+    return Advice(measure, "smooth law", "1x", "-")
+
+
+class TangentialLaw(collections.namedtuple("TangentialLaw", "name line line_rough report error")):
+    """A candidate tangential law: name (the needs column, and its key in
+    the costs), line (the deck line), line_rough (the deck line where the
+    contact needs gw_rough too), report (its (family, law) row in
+    doc/report/table.csv: the cost), error (of the contact's measures m: its
+    error on the scene's contact, the change of the contact point's
+    tangential restitution in the 45-degree impact against cmd_tangential)."""
+
+
+# The tangential laws the verdict chooses among: the cheapest whose error is
+# within the tolerance (cheapest_within). A new law is one more entry, with
+# its report row and its error on the contact (a figure dclaw scene gives,
+# e.g. its tangential restitution against beta_cmd).
+TANGENTIAL_LAWS = [
+    TangentialLaw("tangential history", "tangential history", "tangential history",
+                  ("tangential", "stock tangential history"), lambda m: abs(m["beta_cmd"] - m["beta_history"])),
+    TangentialLaw("cmd_tangential", "tangential cmd_tangential",
+                  "tangential cmd_tangential tangentialRoughness on  (the summits' stiffness, with gw_rough)",
+                  ("tangential", "cmd_tangential"), lambda m: 0.0),   # the exact law: the reference
+]
+
+
+def cheapest_within(laws, m, tol, costs):
+    """The cheapest of the laws (cost from the report; one without a cost
+    after those with one; equal costs: the first listed) whose error on the
+    contact is within tol; none within: the most accurate."""
+    within = [law for law in laws if law.error(m) <= tol]
+    if not within:
+        return min(laws, key=lambda law: law.error(m))
+    return min(within, key=lambda law: costs[law.name] if costs.get(law.name) is not None else math.inf)
+
+
+def effect_tangential_memory(c):
+    """the contact point's tangential restitution of a 45-degree impact under each candidate law"""
+    if not c.mu > 0:
+        return not_assessed("no friction (coefficientFriction 0 or absent)")
+    m = c.m
+    law = cheapest_within(TANGENTIAL_LAWS, m, c.tol, c.s.costs)
+    return Advice("tangential restitution of a 45-degree impact: %s with spring-sliding, %s with Cattaneo-Mindlin "
+                  "(slip distance %s m, one impact moves %s of them)" % (
+                      fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
+                  law.name, c.s.cost(law.name), law.line_rough if c.needs.get("roughness") == "gw_rough" else law.line)
+
+
+def effect_rolling(c):
+    """how far an impact's contact rolls, against Kalker's hand-over (rollingDistanceMin 2 semi-axes)"""
+    if not c.mu > 0:
+        return not_assessed("no friction: no creep forces")
+    X = c.m["rolled_semi_axes"]
+    return Advice("a 45-degree impact rolls its contact %s semi-axes; rolling_friction kalker acts after 2 "
+                  "(rollingDistanceMin)%s" % (fmt(X), ": not in impacts; steady rolling over many semi-axes is not "
+                                              "assessed" if X < 2 else ""),
+                  "no rolling model for impacts" if X < 2 else "rolling_friction kalker where contacts roll", "-", "-")
+
+
+Effect = collections.namedtuple("Effect", "name advise")
+EFFECTS = [Effect("time step", effect_time_step),
+           Effect("Hertz range", effect_hertz_range),
+           Effect("shape", effect_shape),
+           Effect("plasticity", effect_plasticity),
+           Effect("adhesion", effect_adhesion),
+           Effect("roughness", effect_roughness),
+           Effect("tangential memory", effect_tangential_memory),
+           Effect("rolling", effect_rolling)]
+
+
+def check_contact_distance(c, deck, models):
+    """models acting apart: the contact distance factor they need (the plugin's set-up refuses less) against the
+    deck's"""
+    m = c.m
+    jkr_gap = max(m["jkr_separation"], m["md_reach"]) if models & {"maugis", "tabor"} else m["jkr_separation"]
+    for law, gap, on in (("jkr_elliptic", jkr_gap, c.w > 0), ("gw_rough", m["rough_reach"], c.sigma > 0)):
+        need_cdf = 1.0 + gap / c.reach_R
+        m["contact_distance_factor_" + law] = need_cdf
+        if on and law in models and deck.cdf[0] < need_cdf:
+            c.s.warnings.append("%s: %s acts until the surfaces are %s m apart: neigh_modify contact_distance_factor "
+                                "%s (%s) is below the %s it needs" % (c.kind, law, fmt(gap), fmt(deck.cdf[0]),
+                                                                      deck.cdf[1], fmt(need_cdf)))
+
+
+# ------------------------------------------------------------ the deck's own models
+
+# Per effect with a richer law: the law, whether the deck's pair_style has it
+# (of its model, tangential and cohesion words), which of its words the
+# verdict names, and whether a deck that has the law without the need pays
+# for it (of the particle classes); in the order the verdicts print.
+DeckCheck = collections.namedtuple("DeckCheck", "effect model has shown pays")
+DECK_CHECKS = [
+    DeckCheck("plasticity", "jamari_ep", lambda h: h["model"] == "jamari_ep", "model", None),
+    DeckCheck("adhesion", "jkr_elliptic", lambda h: h["model"] == "jkr_elliptic" or h["cohesion"] not in ("off", "-"),
+              "model", None),
+    DeckCheck("roughness", "gw_rough", lambda h: h["model"] == "gw_rough", "model", None),
+    DeckCheck("tangential memory", "cmd_tangential", lambda h: h["tangential"] == "cmd_tangential", "tangential", None),
+    DeckCheck("shape", "hertz_elliptic",
+              lambda h: h["model"] in ("hertz_elliptic", "jkr_elliptic", "gw_rough", "jamari_ep"), "model",
+              lambda parts: any("shape" in p for p in parts)),   # spheres: the elliptic law costs nothing more
+]
+
+
+def deck_verdicts(deck, rows, parts):
+    """a richer law a contact needs that the deck lacks, or one the deck pays for that no assessed contact needs"""
+    words = deck.pair[0] if deck.pair else []
+    have = {"model": "-", "tangential": "-", "cohesion": "off"}
+    for key in have:
+        if key in words and words.index(key) + 1 < len(words):
+            have[key] = words[words.index(key) + 1]
+    verdicts = []
+    for chk in DECK_CHECKS:
+        has = chk.has(have)
+        needed = any(r[1] == chk.effect and r[3].startswith(chk.model) for r in rows)
+        assessed = any(r[1] == chk.effect and r[3] != "-" for r in rows)
+        if needed and not has:
+            verdicts.append("%s: the contacts need %s; the deck has %s" % (chk.effect, chk.model, have[chk.shown]))
+        elif has and assessed and not needed and (chk.pays is None or chk.pays(parts)):
+            verdicts.append("%s: the deck pays for %s, which no contact needs within the tolerance" % (chk.effect,
+                                                                                                        chk.model))
+    return verdicts
+
+
+# ------------------------------------------------------------ the advice
+
+def advise(deck, opts, out):
+    """Every effect for every contact kind; the report on out (and --csv).
+    Returns the rows (kind, effect, measure, needs, cost, deck line), each
+    contact's measures, the particle classes and the largest impact speed."""
+    s = Scene(deck, opts)
+    kinds, wall_type = contact_kinds(deck, s.parts)
+    s.measure_shapes()
+    models = set(deck.pair[0] if deck.pair else []) | {x for words, _ in deck.walls for x in words}
+    rows, measures = [], []
+    for (ia, ib) in kinds:
+        c = Contact(deck, s, ia, ib, wall_type)
+        measures.append(c.m)
+        for eff in EFFECTS:
+            adv = eff.advise(c)
+            c.needs[eff.name] = adv.needs
+            rows.append((c.kind, eff.name) + tuple(adv))
+        check_contact_distance(c, deck, models)
+    write_report(out, deck, opts, s, rows, measures)
+    if opts.csv:
+        write_csv(opts.csv, measures)
+    return rows, measures, s.parts, s.v
+
+
+def write_report(out, deck, opts, s, rows, measures):
+    v, parts = s.v, s.parts
+    model_line = " ".join(deck.pair[0][2:]) if deck.pair else "(no pair_style gran)"
     out.write("dcadvise: %s\n" % opts.deck)
     out.write("pair model: %s (%s)\n" % (model_line, deck.pair[1] if deck.pair else "-"))
     out.write("scene values:\n")
-    out.write("  largest impact speed %s m/s: %s\n" % (fmt(v), src["v"]))
-    out.write("  gravity %s m/s^2 (%s); time step %s s (%s)\n" % (fmt(g), src["g"], fmt(dt), dt_where))
+    out.write("  largest impact speed %s m/s: %s\n" % (fmt(v), s.src["v"]))
+    out.write("  gravity %s m/s^2 (%s); time step %s s (%s)\n" % (fmt(s.g), s.src["g"], fmt(s.dt), s.dt_where))
     for d in parts:
         desc = ("superquadric %s blockiness %s" % (" x ".join(fmt(x) for x in d["shape"]),
                 " ".join(fmt(x) for x in d.get("blockiness", (2, 2))))) if "shape" in d else "sphere"
@@ -695,7 +882,7 @@ def advise(deck, opts, out):
     for mm in measures:
         out.write("  %s: overlap at rest %s m, at impact %s m; contact radius at impact %s m; collision %s s\n" % (
             mm["kind"], fmt(mm["delta_rest"]), fmt(mm["delta_max"]), fmt(mm["a_max"]), fmt(mm["t_c"])))
-    out.write("\nper contact, tolerance %s (the force or restitution change a richer law may make):\n" % fmt(tol))
+    out.write("\nper contact, tolerance %s (the force or restitution change a richer law may make):\n" % fmt(s.tol))
     head = ("effect", "needs", "cost", "measure")
     for kind in [mm["kind"] for mm in measures]:
         sub = [(r[1], r[3], r[4], r[2]) for r in rows if r[0] == kind]
@@ -704,33 +891,15 @@ def advise(deck, opts, out):
         for r in [head] + sub:
             out.write("  " + "  ".join(r[k].ljust(wd[k]) for k in range(3)) + "  " + r[3] + "\n")
     lines = sorted({r[5] for r in rows if r[5] != "-"})
-    if cdf_need:
+    if s.cdf_need:
         lines.append("neigh_modify contact_distance_factor %.6g  (the largest the advised models need; at least "
-                     "LIGGGHTS' 1)" % max(1.0, max(cdf_need)))
+                     "LIGGGHTS' 1)" % max(1.0, max(s.cdf_need)))
     if lines:
         out.write("\ndeck lines for what the scene needs:\n")
         for ln in lines:
             out.write("  %s\n" % ln)
-    # the deck's own choice against what the contacts need
-    have = {}
     words = deck.pair[0] if deck.pair else []
-    for key in ("model", "tangential", "cohesion"):
-        if key in words and words.index(key) + 1 < len(words):
-            have[key] = words[words.index(key) + 1]
-    normal, tang, coh = have.get("model", "-"), have.get("tangential", "-"), have.get("cohesion", "off")
-    richer = {"plasticity": ("jamari_ep", normal == "jamari_ep"),
-              "adhesion": ("jkr_elliptic", normal == "jkr_elliptic" or coh not in ("off", "-")),
-              "roughness": ("gw_rough", normal == "gw_rough"),
-              "tangential memory": ("cmd_tangential", tang == "cmd_tangential"),
-              "shape": ("hertz_elliptic", normal in ("hertz_elliptic", "jkr_elliptic", "gw_rough", "jamari_ep"))}
-    verdicts = []
-    for eff, (model, has) in richer.items():
-        needed = any(r[1] == eff and r[3].startswith(model) for r in rows)
-        assessed = any(r[1] == eff and r[3] != "-" for r in rows)
-        if needed and not has:
-            verdicts.append("%s: the contacts need %s; the deck has %s" % (eff, model, normal if eff != "tangential memory" else tang))
-        elif has and assessed and not needed and not (eff == "shape" and not any("shape" in p for p in parts)):
-            verdicts.append("%s: the deck pays for %s, which no contact needs within the tolerance" % (eff, model))
+    verdicts = deck_verdicts(deck, rows, parts)
     out.write("\nthe deck's models (%s): %s\n" % (" ".join(words[2:]) if words else "no pair_style gran",
                                                  "as the contacts need" if not verdicts else ""))
     for vd in verdicts:
@@ -739,20 +908,21 @@ def advise(deck, opts, out):
         out.write("\nassumed:\n")
         for a in deck.assumed:
             out.write("  - %s\n" % a)
-    if warnings:
+    if s.warnings:
         out.write("\nwarnings:\n")
-        for wng in warnings:
+        for wng in s.warnings:
             out.write("  - %s\n" % wng)
-    if opts.csv:
-        keys = ["kind"]
-        for mm in measures:   # the union, in order: a superquadric class adds its shape errors
-            keys += [k for k in mm if k not in keys]
-        with open(opts.csv, "w", newline="") as f:
-            wr = csv.DictWriter(f, fieldnames=keys)
-            wr.writeheader()
-            for mm in measures:
-                wr.writerow(mm)
-    return rows, measures, parts, v
+
+
+def write_csv(path, measures):
+    keys = ["kind"]
+    for mm in measures:   # the union, in order: a superquadric class adds its shape errors
+        keys += [k for k in mm if k not in keys]
+    with open(path, "w", newline="") as f:
+        wr = csv.DictWriter(f, fieldnames=keys)
+        wr.writeheader()
+        for mm in measures:
+            wr.writerow(mm)
 
 
 class Opts:
