@@ -6,9 +6,12 @@
    and the energy dissipated per cycle (the loop's area, trapezoid rule)
    beside review Eq. 69. With --sigma > 0 the contact is rough (the deck's
    gw_rough gwElliptic on with tangentialRoughness on): Fn held on the GW
-   closed form, the summits' patch of dc/rough_tangential.h. */
+   closed form, the summits' patch of dc/rough_tangential.h. --memory 1:
+   the bounded-memory law (dc/cmd_turning_points.h, the deck's cmdMemory
+   turningPoints) in place of the exact profile. */
 #include "cli.h"
 #include "dc/cmd_tangential.h"
+#include "dc/cmd_turning_points.h"
 #include "dc/gw_rough.h"
 #include "dc/hertz_elliptic.h"
 #include "dc/mindlin.h"
@@ -19,15 +22,22 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The history of either law (p->memory). */
+typedef union {
+  dc_cmd_state profile;
+  dc_cmdtp_state turning_points;
+} history;
+
 /* The contact moved from tangential displacement u0 to u1 along x in
    `steps` equal law steps; out holds the last step's; returns a dc_status. */
 static int leg(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *pa, double u0, double u1, int steps,
-               dc_cmd_state *h, dc_cmd_out *o)
+               history *h, dc_cmd_out *o)
 {
   const double n[3] = {0.0, 0.0, 1.0};
   for (int i = 0; i < steps; i++) {
     const double du[3] = {(u1 - u0) / steps, 0.0, 0.0};
-    const int st = dc_cmd_step(p, m, pa, n, du, 0.0, 1.0, h, o);
+    const int st = p->memory ? dc_cmdtp_step(p, m, pa, n, du, 0.0, 1.0, &h->turning_points, o)
+                             : dc_cmd_step(p, m, pa, n, du, 0.0, 1.0, &h->profile, o);
     if (st) return st;
   }
   return DC_OK;
@@ -63,9 +73,11 @@ static int cmd_cmd_tangential(int argc, char **argv)
     {"sigma", "rms summit height of the contact [m] (deck: surfaceRoughness); > 0: rough, Fn on the GW closed "
               "form and the summits' patch (tangentialRoughness on)", 0, 0},
     {"nasp", "summits n_asp of the GW closed form (deck: asperityCount), with --sigma", 1, 0},
+    {"memory", "0: the exact spring profile; 1: the force with 4 remembered turning points (deck: cmdMemory "
+               "profile | turningPoints)", 0, 0},
     {0, 0, 0, 0}};
   int st = dc_cli_parse(argc, argv, o, "--R R --E E --nu nu --Fn F --mu mu [--r r | --u u] [--n N] [--steps S] "
-                        "[--summary 1] [--sigma S [--nasp N]]");
+                        "[--summary 1] [--sigma S [--nasp N]] [--memory 0|1]");
   if (st) return st == 1 ? 0 : st;
   int n, steps;
   if (dc_cli_count(argv[0], o, "n", &n) || dc_cli_count(argv[0], o, "steps", &steps)) return 2;
@@ -80,8 +92,13 @@ static int cmd_cmd_tangential(int argc, char **argv)
     fprintf(stderr, "dclaw cmd_tangential: --R, --Fn: need R > 0 and Fn > 0 (got %g, %g)\n", R, Fn);
     return 2;
   }
-  dc_cmd_params p = {mu, 0.0, 0, 0};
+  const double memory = dc_cli_get(o, "memory");
+  dc_cmd_params p = {mu, 0.0, 0, 0, memory == 1.0};
   dc_param_error err;
+  if (memory != 0.0 && memory != 1.0) {
+    fprintf(stderr, "dclaw cmd_tangential: --memory: %g is outside {0 (profile), 1 (turningPoints)}\n", memory);
+    return 2;
+  }
   if (dc_cmd_check(&p, &err) != DC_OK) {
     fprintf(stderr, "dclaw cmd_tangential: --mu: %s = %g is outside %s\n", err.name, err.value, err.range);
     return 2;
@@ -137,7 +154,7 @@ static int cmd_cmd_tangential(int argc, char **argv)
     return 2;
   }
   const dc_patch pa = {a, a, {0.0, 0.0, 0.0}, Fn, Fn, 1.0};
-  dc_cmd_state h;
+  history h;
   memset(&h, 0, sizeof h);
   dc_cmd_out out;
   memset(&out, 0, sizeof out);

@@ -86,7 +86,7 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
                         const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta,
                         double *rolled)
 {
-  const dc_cmd_params cp = {mu, 0.0, 0, 0};
+  const dc_cmd_params cp = {mu, 0.0, 0, 0, 0};
   const dc_classical_tangential_params sp = {DC_CT_SPRING_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_NONE, mu, 0.0, 0.0,
                                              0.0, Gstar, Estar, 0.0, 0.0};
   dc_classical_tangential ct;

@@ -1,11 +1,14 @@
 /* LIGGGHTS tangential model `cmd_tangential`: Cattaneo-Mindlin-Deresiewicz
    tangential force of elliptic and circular contacts with full load history,
    and (setting) Mindlin twisting (c_core: dc/cmd_tangential.h, review
-   Sec. 3.1).
+   Sec. 3.1), or (setting cmdMemory turningPoints) the bounded-memory law of
+   dc/cmd_turning_points.h.
 
    Deck: pair_style gran model <normal> tangential cmd_tangential [settings]
          fix ID all wall/gran model <normal> tangential cmd_tangential ... [settings]
    Settings:
+     cmdMemory profile|turningPoints  the exact spring profile (default) or the
+                            force with up to 4 remembered turning points
      cmdTwisting on|off     Mindlin twisting moment about the contact normal (default off)
      cmdDissipation on|off  tangential viscoelastic dissipation, review Eq. 85 (default off;
                             property tangentialViscoelasticTime peratomtypepair [s])
@@ -46,6 +49,7 @@ TANGENTIAL_MODEL(TANGENTIAL_CMD,cmd_tangential,@DC_MODEL_ID@)
 #include "tangential_model_base.h"
 #include "update.h"
 #include "dc/cmd_tangential.h"
+#include "dc/cmd_turning_points.h"
 #include "dc/contract.h"
 #include "dc/mindlin.h"
 #include "dc/status.h"
@@ -59,7 +63,7 @@ class TangentialModel<TANGENTIAL_CMD> : public TangentialModelBase
 public:
   TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     TangentialModelBase(lmp, hsetup, c), coeffFrict(NULL), tvisc(NULL), twisting(false), dissipation(false),
-    roughness(false), history_offset(-1), ntypes(0), rough(NULL)
+    roughness(false), memory(0), history_offset(-1), nfields(0), ntypes(0), rough(NULL)
   {
     patch.request(c);
     handover.attach(c);
@@ -70,11 +74,14 @@ public:
     settings.registerOnOff("cmdTwisting", twisting, false);
     settings.registerOnOff("cmdDissipation", dissipation, false);
     settings.registerOnOff("tangentialRoughness", roughness, false);
+    static const char *const names[] = {"profile", "turningPoints"};
+    static const int values[] = {0, 1};
+    settings.registerChoice("cmdMemory", memory, names, values, 2, "profile");
     handover.registerSettings(settings);
   }
 
-  /* The law's history, without the twist profile unless cmdTwisting is on
-     (the law does not touch it then). LIGGGHTS' contact-history pages hold
+  /* The law's history (the profile's or the turning points'), without the
+     twist's unless cmdTwisting is on (the law does not touch it then). LIGGGHTS' contact-history pages hold
      neigh_modify one x (values per contact); the default page (100000) is
      too small for this many and LIGGGHTS fails without a message: grow it
      (the margin covers the other models' values). */
@@ -88,11 +95,13 @@ public:
       if (twisting) stop("tangentialRoughness on does not take cmdTwisting on (no twisting law for summits)");
       rough->wanted = true;
     }
-    const int nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
+    const dc_history_field *fields = memory ? dc_cmdtp_history : dc_cmd_history;
+    if (memory) nfields = twisting ? DC_CMDTP_HISTORY_NFIELDS : DC_CMDTP_FORCE_NFIELDS;
+    else nfields = twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS;
     const int need = neighbor->oneatom * (nfields + 40);
     if (neighbor->pgsize < need) neighbor->pgsize = need;
     for (int k = 0; k < nfields; k++) {
-      const int off = hsetup->add_history_value(dc_cmd_history[k].name, dc_cmd_history[k].flips ? "1" : "0");
+      const int off = hsetup->add_history_value(fields[k].name, fields[k].flips ? "1" : "0");
       if (k == 0) history_offset = off;
     }
   }
@@ -120,6 +129,7 @@ public:
         p.t_visc = dissipation ? tvisc[i][j] : 0.0;
         p.dissipation = dissipation;
         p.twisting = twisting;
+        p.memory = memory;
         dc_param_error err;
         char msg[256];
         if (dc_cmd_check(&p, &err) != DC_OK) {
@@ -141,8 +151,7 @@ public:
       dc_patch stock;
       const dc_patch &p = patch.read(sidata, stock);
       if (handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
-        if (sidata.computeflag && sidata.shearupdate)
-          memset(state(sidata), 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
+        if (sidata.computeflag && sidata.shearupdate) memset(state(sidata), 0, nfields * sizeof(double));
         return;
       }
     }
@@ -154,9 +163,10 @@ public:
      (jkr_elliptic in tension): the force acts as long as it is formed. */
   void surfacesClose(SurfacesCloseData &scdata, ForceData &i_forces, ForceData &j_forces)
   {
-    dc_cmd_state *h = state(scdata);
     if (!patch.formed()) {
-      if (h->a_prev != 0.0) memset(h, 0, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
+      /* both laws' histories begin with the normal, nonzero once stepped */
+      double *h = state(scdata);
+      if (h[0] != 0.0 || h[1] != 0.0 || h[2] != 0.0) memset(h, 0, nfields * sizeof(double));
       return;
     }
     SurfacesIntersectData &sidata = static_cast<SurfacesIntersectData &>(scdata);
@@ -179,10 +189,7 @@ public:
   void endPass(SurfacesIntersectData &, ForceData &, ForceData &) {}
 
 private:
-  dc_cmd_state *state(const SurfacesCloseData &d) const
-  {
-    return reinterpret_cast<dc_cmd_state *>(&d.contact_history[history_offset]);
-  }
+  double *state(const SurfacesCloseData &d) const { return &d.contact_history[history_offset]; }
 
   void stop(const char *what)
   {
@@ -208,17 +215,23 @@ private:
                            wi[2] - (sidata.is_wall ? 0.0 : wj[2])};
       dphi = (w[0] * n[0] + w[1] * n[1] + w[2] * n[2]) * dt;
     }
-    dc_cmd_state *h = state(sidata);
-    dc_cmd_state scratch;
+    double *h = state(sidata);
+    double scratch[DC_CMD_HISTORY_NFIELDS];
+    static_assert(DC_CMD_HISTORY_NFIELDS >= DC_CMDTP_HISTORY_NFIELDS, "scratch holds either history");
     if (!(sidata.computeflag && sidata.shearupdate)) {   /* a pass that must not change the history */
-      memcpy(&scratch, h, (twisting ? DC_CMD_HISTORY_NFIELDS : DC_CMD_FORCE_NFIELDS) * sizeof(double));
-      h = &scratch;
+      memcpy(scratch, h, nfields * sizeof(double));
+      h = scratch;
     }
     /* the inputs lie in the law's domain by construction: the trusted
        step; on an error the checked step names the cause */
     dc_cmd_out out;
-    if (dc_cmd_step_trusted(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out) != DC_OK) {
-      const int st = dc_cmd_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, h, &out);
+    dc_cmdtp_state *ht = reinterpret_cast<dc_cmdtp_state *>(h);
+    dc_cmd_state *hx = reinterpret_cast<dc_cmd_state *>(h);
+    const int trusted = memory ? dc_cmdtp_step_trusted(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, ht, &out)
+                               : dc_cmd_step_trusted(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, hx, &out);
+    if (trusted != DC_OK) {
+      const int st = memory ? dc_cmdtp_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, ht, &out)
+                            : dc_cmd_step(&params[k], &pairs[k], &p, sidata.en, du, dphi, dt, hx, &out);
       char msg[384];
       snprintf(msg, sizeof msg, "Tangential model cmd_tangential: contact of atom %d: patch a = %g, b = %g, friction "
                "load %g, displacement %g %g %g: %s", (int)atom->tag[sidata.i], p.a, p.b, p.F_bound, du[0], du[1],
@@ -242,7 +255,8 @@ private:
 
   double **coeffFrict, **tvisc;
   bool twisting, dissipation, roughness;
-  int history_offset, ntypes;
+  int memory;           /* cmdMemory: 0 profile, 1 turningPoints */
+  int history_offset, nfields, ntypes;
   RoughPatchSlot *rough;   /* tangentialRoughness on: gw_rough's summits' patch */
   std::vector<dc_cmd_params> params;
   std::vector<dc_mindlin_pair> pairs;
