@@ -38,9 +38,20 @@ DC_INLINE double vnorm(int dim, const double *v)
   return m * sqrt(x * x + y * y + z * z);
 }
 
-/* 1 - ((1 - q))^2/3: c2 of a branch whose force has used the fraction q
-   of its range (theta^3 = 1 - q) */
-static inline double c2_of(double q) { return q >= 1.0 ? 1.0 : q <= 0.0 ? 0.0 : 1.0 - cbrt((1.0 - q) * (1.0 - q)); }
+/* theta^2 = (1 - q)^2/3 of a branch whose force has used the fraction q
+   of its range (theta^3 = 1 - q), given y0 near it (the previous step's
+   theta^2): two Newton steps for y^3 = (1 - q)^2 where y0^3 is within
+   0.3 % (a step's load change: then within 1e-12), the cube root
+   otherwise. */
+static inline double theta2_of(double q, double y0)
+{
+  if (!(q < 1.0)) return 0.0;
+  if (!(q > 0.0)) return 1.0;
+  const double r = (1.0 - q) * (1.0 - q), y03 = y0 * y0 * y0;
+  if (!(fabs(y03 - r) <= 3e-3 * r)) return cbrt(r);
+  const double y1 = (2.0 * y03 + r) / (3.0 * y0 * y0);
+  return (2.0 * y1 * y1 * y1 + r) / (3.0 * y1 * y1);
+}
 
 /* One quantity's memory while a step works on it. */
 typedef struct {
@@ -58,129 +69,10 @@ DC_INLINE double anchor_of(int dim, const mem *s, double *A)
   return s->nt ? 2.0 : 1.0;
 }
 
-/* A smaller limit clips the slipping annulus (Eq. 70: the force falls by
-   (S_prev - S)(1 - theta) along its branch) and draws the turning points
-   onto the new limit; then c2 from the force (the state is the force). */
-DC_INLINE void limit_change(int dim, mem *s, double S, double Sp)
-{
-  double A[3], X[3];
-  double m = anchor_of(dim, s, A);
-  if (S < Sp) {
-    for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
-    const double xm = vnorm(dim, X), th = sqrt(1.0 - s->c2), red = (Sp - S) * (1.0 - th);
-    if (xm > 0.0) {
-      const double f = xm > red ? (xm - red) / xm : 0.0;
-      for (int c = 0; c < dim; c++) s->F[c] = A[c] + f * X[c];
-    }
-    for (int j = 0; j < s->nt; j++) {
-      const double tm = vnorm(dim, s->T[j]);
-      if (tm > S)
-        for (int c = 0; c < dim; c++) s->T[j][c] *= S / tm;
-    }
-    m = anchor_of(dim, s, A);
-  }
-  for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
-  s->c2 = c2_of(vnorm(dim, X) / (m * S));
-}
-
-/* The newest turning point forgotten with the one before (the innermost
-   loop) when the memory is full, then F pushed. */
-DC_INLINE void push_turn(int dim, mem *s)
-{
-  if (s->nt == NT) s->nt -= 2;
-  for (int c = 0; c < dim; c++) s->T[s->nt][c] = s->F[c];
-  s->nt++;
-  s->c2 = 0.0;
-}
-
-/* The step's displacement d of the stuck springs on the branches (header);
-   k the no-slip stiffness, S > 0 the limit. Returns theta. */
-DC_INLINE double branch_step(int dim, mem *s, const double *d, double k, double S)
-{
-  double A[3], X[3], e[3];
-  double m = anchor_of(dim, s, A);
-  for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
-  double xm = vnorm(dim, X);
-  const double dm = vnorm(dim, d);
-  if (!(dm > 0.0)) return sqrt(1.0 - s->c2);
-  double sa = dm;   /* displacement along the branch */
-  if (xm > 0.0) {
-    for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
-    double dp = 0.0;
-    for (int c = 0; c < dim; c++) dp += d[c] * e[c];
-    if (dp < 0.0) {   /* reversal */
-      push_turn(dim, s);
-      m = anchor_of(dim, s, A);
-      xm = 0.0;
-    } else {
-      sa = dp;
-      if (dim == 3) {   /* the part across X turns it with the stuck core's stiffness */
-        const double kth = k * sqrt(1.0 - s->c2);
-        double Y[3];
-        for (int c = 0; c < 3; c++) Y[c] = X[c] + kth * (d[c] - dp * e[c]);
-        const double ym = vnorm(3, Y);
-        if (ym > 0.0)
-          for (int c = 0; c < 3; c++) e[c] = Y[c] / ym;
-      }
-    }
-  }
-  if (!(xm > 0.0))
-    for (int c = 0; c < dim; c++) e[c] = d[c] / dm;
-  for (;;) {
-    const double g = 2.0 * k / (3.0 * m * S);   /* dc2/ds */
-    const double c2n = s->c2 + sa * g;
-    if (s->nt == 0) {   /* virgin branch */
-      s->c2 = c2n < 1.0 ? c2n : 1.0;
-      const double th2 = 1.0 - s->c2;
-      xm = S * (1.0 - th2 * sqrt(th2));
-      break;
-    }
-    /* the range of the branch before: |previous turning point - anchor| */
-    double Tb[3], R[3];
-    const double mb = s->nt >= 2 ? 2.0 : 1.0;
-    for (int c = 0; c < dim; c++) {
-      Tb[c] = s->nt >= 2 ? s->T[s->nt - 2][c] : 0.0;
-      R[c] = A[c] - Tb[c];
-    }
-    const double qe = fmin(vnorm(dim, R) / (mb * S), 1.0);
-    const double th2 = c2n < 1.0 ? 1.0 - c2n : 0.0, q = 1.0 - th2 * sqrt(th2);
-    if (q < qe) {
-      s->c2 = c2n;
-      xm = 2.0 * S * q;
-      break;
-    }
-    /* the previous turning point reached: the rest of the displacement on
-       the branch before (Madelung; at nt = 1 the virgin curve at -T_1) */
-    sa -= (c2_of(qe) - s->c2) / g;
-    if (sa < 0.0) sa = 0.0;
-    double Fp[3];
-    for (int c = 0; c < dim; c++) Fp[c] = A[c] + e[c] * (2.0 * S * qe);
-    s->nt = s->nt >= 2 ? s->nt - 2 : 0;
-    m = anchor_of(dim, s, A);
-    for (int c = 0; c < dim; c++) X[c] = Fp[c] - A[c];
-    xm = vnorm(dim, X);
-    if (xm > 0.0)
-      for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
-    s->c2 = c2_of(xm / (m * S));
-  }
-  for (int c = 0; c < dim; c++) s->F[c] = A[c] + e[c] * xm;
-  return sqrt(1.0 - s->c2);
-}
-
-/* Full slip clears the memory; |F| <= S. */
-DC_INLINE void bound(int dim, mem *s, double S)
-{
-  const double fm = vnorm(dim, s->F);
-  if (fm >= S) {
-    const double f = fm > 0.0 ? S / fm : 0.0;
-    for (int c = 0; c < dim; c++) s->F[c] *= f;
-    s->nt = 0;
-    s->c2 = 1.0;
-  }
-}
-
-/* One quantity's whole step: limit change, displacement, bound. Returns
-   theta. */
+/* One quantity's step (header): the limit's change, the displacement d of
+   the stuck springs (k the no-slip stiffness, S > 0 the limit now, Sp the
+   previous step's), the friction bound. Returns theta, the stuck
+   fraction. */
 DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, double Sp)
 {
   if (!(S > 0.0)) {   /* no friction: nothing sticks, nothing is remembered */
@@ -188,10 +80,115 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
     s->c2 = 1.0;
     return 0.0;
   }
-  if (S != Sp) limit_change(dim, s, S, Sp);
-  const double th = branch_step(dim, s, d, k, S);
-  bound(dim, s, S);
-  return s->nt == 0 && s->c2 >= 1.0 ? 0.0 : th;
+  double A[3], X[3];
+  double m = anchor_of(dim, s, A);
+  for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
+  double xm = vnorm(dim, X), th2 = 1.0 - s->c2;
+  if (S != Sp) {
+    if (S < Sp) {
+      /* a smaller limit clips the slipping annulus: the force falls by
+         (S_prev - S)(1 - theta) along its branch (Eq. 70), and turning
+         points outside the new limit are drawn onto it */
+      const double red = (Sp - S) * (1.0 - sqrt(th2)), f = xm > red ? (xm - red) / xm : 0.0;
+      for (int c = 0; c < dim; c++) {
+        X[c] *= f;
+        s->F[c] = A[c] + X[c];
+      }
+      xm *= f;
+      int clipped = 0;
+      for (int j = 0; j < s->nt; j++) {
+        const double tm = vnorm(dim, s->T[j]);
+        if (tm > S) {
+          for (int c = 0; c < dim; c++) s->T[j][c] *= S / tm;
+          clipped = 1;
+        }
+      }
+      if (clipped) {
+        anchor_of(dim, s, A);
+        for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
+        xm = vnorm(dim, X);
+      }
+    }
+    th2 = theta2_of(xm / (m * S), th2);   /* the state is the force */
+  }
+  const double dm = vnorm(dim, d);
+  if (dm > 0.0) {
+    double e[3], sa;
+    const double dp = xm > 0.0 ? (dim == 1 ? d[0] * X[0] : dc_dot3(d, X)) / xm : 0.0;
+    if (dp < 0.0) {
+      /* reversal: F pushed (the newest turning point forgotten with the
+         one before when the memory is full) */
+      if (s->nt == NT) s->nt -= 2;
+      for (int c = 0; c < dim; c++) s->T[s->nt][c] = A[c] = s->F[c];
+      s->nt++;
+      m = 2.0;
+      xm = 0.0;
+      th2 = 1.0;
+    }
+    if (xm > 0.0) {
+      const double ix = 1.0 / xm;
+      for (int c = 0; c < dim; c++) e[c] = X[c] * ix;
+      sa = dp;
+      if (dim == 3) {   /* the part across X turns it with the stuck core's stiffness */
+        const double kth = k * sqrt(th2);
+        double Y[3];
+        for (int c = 0; c < 3; c++) Y[c] = X[c] + kth * (d[c] - dp * e[c]);
+        const double ym = vnorm(3, Y);
+        if (ym > 0.0)
+          for (int c = 0; c < 3; c++) e[c] = Y[c] / ym;
+      }
+    } else {
+      for (int c = 0; c < dim; c++) e[c] = d[c] / dm;
+      sa = dm;
+    }
+    for (;;) {
+      const double g = 2.0 * k / (3.0 * m * S);   /* -d theta^2 / ds */
+      double t2 = th2 - sa * g;
+      if (!(t2 > 0.0)) t2 = 0.0;
+      const double t3 = t2 * sqrt(t2);
+      if (s->nt == 0) {   /* virgin branch */
+        th2 = t2;
+        xm = S * (1.0 - t3);
+        break;
+      }
+      /* the range of the branch before: |previous turning point - anchor| */
+      const double mb = s->nt >= 2 ? 2.0 : 1.0;
+      double R[3];
+      for (int c = 0; c < dim; c++) R[c] = A[c] - (s->nt >= 2 ? s->T[s->nt - 2][c] : 0.0);
+      const double qe = fmin(vnorm(dim, R) / (mb * S), 1.0), q = 1.0 - t3;
+      if (q < qe) {
+        th2 = t2;
+        xm = 2.0 * S * q;
+        break;
+      }
+      /* the previous turning point reached: the rest of the displacement on
+         the branch before (Madelung; at nt = 1 the virgin curve at -T_1) */
+      const double te2 = theta2_of(qe, t2);
+      sa -= (th2 - te2) / g;
+      if (sa < 0.0) sa = 0.0;
+      double Fp[3];
+      for (int c = 0; c < dim; c++) Fp[c] = A[c] + e[c] * (2.0 * S * qe);
+      s->nt = s->nt >= 2 ? s->nt - 2 : 0;
+      m = anchor_of(dim, s, A);
+      for (int c = 0; c < dim; c++) X[c] = Fp[c] - A[c];
+      xm = vnorm(dim, X);
+      if (xm > 0.0)
+        for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
+      th2 = theta2_of(xm / (m * S), te2);
+    }
+    for (int c = 0; c < dim; c++) s->F[c] = A[c] + e[c] * xm;
+  }
+  s->c2 = 1.0 - th2;
+  if (s->nt) {   /* |F| <= S; full slip clears the memory (the virgin branch is within it) */
+    const double fm = vnorm(dim, s->F);
+    if (fm >= S) {
+      for (int c = 0; c < dim; c++) s->F[c] *= S / fm;
+      s->nt = 0;
+      s->c2 = 1.0;
+      return 0.0;
+    }
+  }
+  return sqrt(th2);
 }
 
 /* ------------------------------------------------------------------ */
