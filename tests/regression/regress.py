@@ -28,6 +28,10 @@ class Checks:
         err = abs(got - want) / max(abs(want), 1e-300)
         self.true(math.isfinite(got) and err <= tol, "%s: got %.12g want %.12g rel.err %.3g (tol %.3g)" % (what, got, want, err, tol))
 
+    def abs_(self, got, want, tol, what):
+        err = abs(got - want)
+        self.true(math.isfinite(got) and err <= tol, "%s: got %.12g want %.12g abs.err %.3g (tol %.3g)" % (what, got, want, err, tol))
+
     def finish(self):
         print("%s: %d passed, %d failed" % (self.name, self.passed, self.failed))
         sys.exit(1 if self.failed else 0)
