@@ -270,9 +270,9 @@ DC_INLINE int tp_check(const dc_cmd_params *p, const dc_mindlin_pair *m, const d
   return DC_OK;
 }
 
-DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
-                      const double n[3], const double du[3], double dphi, double dt, dc_cmdtp_state *h,
-                      dc_cmd_out *out)
+DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_mindlin_pair *restrict m,
+                      const dc_patch *restrict patch, const double *restrict n, const double *restrict du, double dphi,
+                      double dt, dc_cmdtp_state *restrict h, dc_cmd_out *restrict out)
 {
   int nf, ntw;
   if (tp_counts(p, h, &nf, &ntw) != DC_OK) return DC_EDOM;
@@ -289,14 +289,16 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair
   /* frame: unit normal, no-slip stiffness along the major axis, d = M du_t */
   const double in = 1.0 / sqrt(dc_dot3(n, n));
   const double nh[3] = {n[0] * in, n[1] * in, n[2] * in};
-  const double t = m->s1 / m->s0;
-  double cm = (2.0 - t) * (M_PI / 4.0), rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
+  double rho = 1.0, ax[3] = {0.0, 0.0, 0.0};
+  /* circle: k = 8 a / (2 s0 - s1) (Eq. 56 with K = pi/2, D = pi/4) */
+  double k = 8.0 * a / (2.0 * m->s0 - m->s1);
   dc_ellint el;
   const int ell = a > b && axl > 0.0;
   if (ell) {
-    const double g = b / a;
+    const double g = b / a, t = m->s1 / m->s0;
     if (dc_ellint_m1(g * g, &el) != DC_OK) return DC_EDOM;
-    cm = (1.0 - t) * el.K + t * el.D;
+    const double cm = (1.0 - t) * el.K + t * el.D;
+    k = 2.0 * M_PI * a / (m->s0 * cm);
     rho = cm / (el.K - t * el.D);   /* k_minor / k_major */
     const double an = dc_dot3(patch->axis, nh);
     for (int c = 0; c < 3; c++) ax[c] = patch->axis[c] - an * nh[c];
@@ -304,7 +306,6 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
     for (int c = 0; c < 3; c++) ax[c] /= al;
   }
-  const double k = 2.0 * M_PI * a / (m->s0 * cm);
   const double dn = dc_dot3(du, nh);
   double dut[3], d[3];
   for (int c = 0; c < 3; c++) dut[c] = du[c] - dn * nh[c];
@@ -321,7 +322,8 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair
   for (int c = 0; c < 3; c++) f.F[c] = h->F[c];
   f.c2 = h->c2;
   f.nt = nf;
-  memcpy(f.T, h->T, sizeof(double) * 3 * nf);
+  for (int j = 0; j < nf; j++)
+    for (int c = 0; c < 3; c++) f.T[j][c] = h->T[j][c];
   turn_plane(h->n_prev, nh, &f);
   const double th = mem_step(3, &f, d, k, S, h->S_prev);
   double F[3] = {f.F[0], f.F[1], f.F[2]};
@@ -368,9 +370,10 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair
     kr = tht * ktw;
   }
 
-  double fin = dc_nf(F[0]) + dc_nf(F[1]) + dc_nf(F[2]) + dc_nf(kt) + dc_nf(f.F[0]) + dc_nf(f.F[1]) + dc_nf(f.F[2]) +
-               dc_nf(f.c2) + dc_nf(th) + dc_nf(Mt) + dc_nf(kr);
-  for (int j = 0; j < f.nt; j++) fin += dc_nf(f.T[j][0]) + dc_nf(f.T[j][1]) + dc_nf(f.T[j][2]);
+  /* the turning points are earlier forces (turned, or scaled down): finite
+     when the force is */
+  const double fin = ((dc_nf(F[0]) + dc_nf(F[1])) + (dc_nf(F[2]) + dc_nf(kt))) +
+                     ((dc_nf(f.F[0]) + dc_nf(f.F[1])) + (dc_nf(f.F[2]) + dc_nf(f.c2))) + (dc_nf(Mt) + dc_nf(kr));
   if (fin != 0.0) return DC_ERANGE;
 
   for (int c = 0; c < 3; c++) out->Ft[c] = F[c];
@@ -385,8 +388,10 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *p, const dc_mindlin_pair
   h->c2 = f.c2;
   h->S_prev = S;
   h->nturn = f.nt;
-  memcpy(h->T, f.T, sizeof(double) * 3 * f.nt);
-  if (f.nt < nf) memset(h->T[f.nt], 0, sizeof(double) * 3 * (nf - f.nt));
+  for (int j = 0; j < f.nt; j++)
+    for (int c = 0; c < 3; c++) h->T[j][c] = f.T[j][c];
+  for (int j = f.nt; j < nf; j++)
+    for (int c = 0; c < 3; c++) h->T[j][c] = 0.0;
   if (p->twisting) {
     h->M = tw.F[0];
     h->c2_t = tw.c2;

@@ -14,8 +14,10 @@
    same on this path, whose damping force is nil, and so is the stiffness
    setting ratio 4 G* / E* K_n with the Hertz stiffness), Di Renzo-Di Maio,
    Langston (zheng without its viscous term), incrementally slipping
-   friction with K0 = 8 G* a, Coulomb. The viscous laws have no
-   rate-independent counterpart and are left out.
+   friction with K0 = 8 G* a, Coulomb, and cmd_tangential's bounded
+   memory (cmdMemory turningPoints, dc/cmd_turning_points.h; this path has
+   3 turning points at constant load: exact to rounding). The viscous laws
+   have no rate-independent counterpart and are left out.
 
    Error: max |F_t - F_t,cmd| over the path / mu F_n. Kernel call: one step
    of the law along the path.
@@ -29,9 +31,22 @@
    (dc_rough_tangential_axes every step, then the step), cmd_tangential on
    the smooth contact's patch (a = (R delta)^1/2, none before touch) and
    spring with sliding of Mindlin's stiffness 8 G* a (stock history).
+   Oblique impacts: a sphere of alumina (Chung & Ooi 2011: R = 2.5 mm,
+   E = 380 GPa, nu = 0.23, 4000 kg/m^3, mu = 0.092) hits a plane of the
+   same at 3.9 m/s, incidence 5-80 degrees from the normal (micro-slip to
+   gross sliding), elastic Hertz; the contact point's slip s changes by
+   -7/2 F_t / m (translation and rolling); symplectic Euler at Tc/4000.
+   Error: max over the angles of |beta - beta cmd_tangential|, beta =
+   s'/s the tangential restitution of the contact point. The same with
+   the elliptic patch of an ellipsoid tip (relative radii 2.5 and 1 mm,
+   the sphere's mass and inertia kept: a test of the laws, not of the
+   body), sliding at 30 degrees from the patch's major axis (the force not
+   parallel to the slip).
+
    Prints CSV (report_common.h). */
 #include "dc/classical_tangential.h"
 #include "dc/cmd_tangential.h"
+#include "dc/cmd_turning_points.h"
 #include "dc/gw_integrals.h"
 #include "dc/gw_rough.h"
 #include "dc/hertz_elliptic.h"
@@ -66,7 +81,7 @@ static void build_path(double ds)
 
 typedef struct {
   const char *name;
-  int law, exact;   /* law: a dc_ct_law, or -1 for cmd_tangential */
+  int law, exact;   /* law: a dc_ct_law, or -1 for cmd_tangential, -3 its turningPoints */
 } law_row;
 
 static dc_cmd_params cmdp;
@@ -83,8 +98,10 @@ static void run(const dc_classical_tangential *m, int law, double *F, double *ac
   const dc_classical_tangential_contact c = {1.0, 0.0, 0.0};
   dc_classical_tangential_state h;
   dc_cmd_state hc;
+  dc_cmdtp_state ht;
   memset(&h, 0, sizeof h);
   memset(&hc, 0, sizeof hc);
+  memset(&ht, 0, sizeof ht);
   for (int i = 0; i < nstep; i++) {
     const double d[3] = {du[i], 0.0, 0.0}, v[3] = {du[i] / DT, 0.0, 0.0};
     double fx;
@@ -93,6 +110,10 @@ static void run(const dc_classical_tangential *m, int law, double *F, double *ac
       dc_patch p = patch;
       dc_rough_tangential_axes(&rgeom, 1.0, rsigma, rdelta, &p.a, &p.b);
       dc_cmd_step(&cmdp, &pair, &p, NZ, d, 0.0, DT, &hc, &o);
+      fx = o.Ft[0];
+    } else if (law == -3) {
+      dc_cmd_out o;
+      dc_cmdtp_step(&cmdp, &pair, &patch, NZ, d, 0.0, DT, &ht, &o);
       fx = o.Ft[0];
     } else if (law < 0) {
       dc_cmd_out o;
@@ -110,7 +131,7 @@ static void run(const dc_classical_tangential *m, int law, double *F, double *ac
 
 /* The classical law's model with Mindlin's stiffness and no damping (zeros
    for cmd_tangential's rows, law < 0). */
-static int law_model(int law, double Gstar, double Estar, dc_classical_tangential *m)
+static int law_model(int law, double mu, double Gstar, double Estar, dc_classical_tangential *m)
 {
   memset(m, 0, sizeof *m);
   if (law < 0) return DC_OK;
@@ -119,11 +140,70 @@ static int law_model(int law, double Gstar, double Estar, dc_classical_tangentia
   p.law = law;
   p.stiffness = DC_CT_KT_MINDLIN;
   p.damping = DC_CT_DAMP_NONE;
-  p.mu = MU;
+  p.mu = mu;
   p.Gstar = Gstar;
   p.Estar = Estar;
   dc_param_error err;
   return dc_classical_tangential_init(&p, m, &err);
+}
+
+/* Oblique impacts (header): beta at each angle into beta[], the steps
+   taken into *steps. ell: the ellipsoid tip's patch. */
+#define NANGLE 9
+static const double ANGLES[NANGLE] = {5, 10, 20, 30, 40, 50, 60, 70, 80};
+
+static int oblique(const dc_classical_tangential *m, int law, int ell, double *beta, long *steps, double *acc)
+{
+  const double E = 3.8e11, nu = 0.23, R = 2.5e-3, v = 3.9, mass = 4000.0 * 4.0 / 3.0 * M_PI * R * R * R;
+  const double Estar = E / (2.0 * (1.0 - nu * nu)), mu = 0.092;
+  dc_hertz_geom g;
+  if (dc_hertz_geometry(R, ell ? 1e-3 : R, &g) != DC_OK) return 1;
+  dc_mindlin_pair mp;
+  if (dc_mindlin_pair_init(E, nu, E, nu, &mp) != DC_OK) return 1;
+  const dc_cmd_params cp = {mu, 0.0, 0, 0, law == -3};
+  const double Tc = 2.87 * pow(mass * mass / (g.R_force * Estar * Estar * v), 0.2), dt = Tc / 4000.0;
+  /* the patch's major axis at 30 degrees from the slip (x) on the ellipse */
+  const double ax[3] = {ell ? cos(M_PI / 6.0) : 0.0, ell ? sin(M_PI / 6.0) : 0.0, 0.0};
+  const dc_classical_tangential_contact cc = {mass, 0.0, 0.0};
+  *steps = 0;
+  for (int k = 0; k < NANGLE; k++) {
+    const double th = ANGLES[k] * M_PI / 180.0, vt = v * sin(th);
+    double vn = v * cos(th), delta = 0.0, sl[2] = {vt, 0.0};
+    dc_cmd_state hc;
+    dc_cmdtp_state ht;
+    dc_classical_tangential_state hs;
+    memset(&hc, 0, sizeof hc);
+    memset(&ht, 0, sizeof ht);
+    memset(&hs, 0, sizeof hs);
+    for (;;) {
+      delta += vn * dt;
+      if (delta <= 0.0) break;
+      dc_hertz_state h;
+      if (dc_hertz_contact(&g, Estar, delta, &h) != DC_OK) return 1;
+      const dc_patch pa = {h.a, h.b, {ax[0], ax[1], ax[2]}, h.F, h.F, 1.0};
+      const double du[3] = {sl[0] * dt, sl[1] * dt, 0.0}, vv[3] = {sl[0], sl[1], 0.0};
+      double Ft[3];
+      int st;
+      if (law == -1 || law == -3) {
+        dc_cmd_out o;
+        st = law == -1 ? dc_cmd_step(&cp, &mp, &pa, NZ, du, 0.0, dt, &hc, &o)
+                       : dc_cmdtp_step(&cp, &mp, &pa, NZ, du, 0.0, dt, &ht, &o);
+        memcpy(Ft, o.Ft, sizeof Ft);
+      } else {
+        dc_classical_tangential_out o;
+        st = dc_classical_tangential_step(m, &pa, &cc, NZ, du, vv, dt, &hs, &o);
+        memcpy(Ft, o.Ft, sizeof Ft);
+      }
+      if (st != DC_OK) return 1;
+      vn -= h.F / mass * dt;
+      sl[0] -= 3.5 * Ft[0] / mass * dt;
+      sl[1] -= 3.5 * Ft[1] / mass * dt;
+      *acc += Ft[0];
+      ++*steps;
+    }
+    if (beta) beta[k] = sl[0] / vt;
+  }
+  return 0;
 }
 
 int main(void)
@@ -141,6 +221,7 @@ int main(void)
 
   const law_row rows[] = {
       {"cmd_tangential", -1, 1},
+      {"cmd_tangential cmdMemory turningPoints", -3, 0},
       {"springSliding: Mindlin K_t (stock history)", DC_CT_SPRING_SLIDING, 0},
       {"diRenzo", DC_CT_DI_RENZO, 0},
       {"langston", DC_CT_LANGSTON, 0},
@@ -152,7 +233,7 @@ int main(void)
   report_header();
   for (size_t k = 0; k < sizeof rows / sizeof rows[0]; k++) {
     dc_classical_tangential m;
-    if (law_model(rows[k].law, Gstar, Estar, &m) != DC_OK) return 1;
+    if (law_model(rows[k].law, MU, Gstar, Estar, &m) != DC_OK) return 1;
     run(&m, rows[k].law, F, &acc);
     report_err e = {0};
     for (int i = 0; i < nstep; i++) report_err_add(&e, (F[i] - Fref[i]) / (MU * Fn));
@@ -160,6 +241,38 @@ int main(void)
     REPORT_TIME(ns, 1, run(&m, rows[k].law, NULL, &acc));
     report_row("tangential", "shear cycles 0.5 and 2 slip distances", rows[k].name, rows[k].exact, ns / nstep, &e,
                "max |F_t - F_t cmd_tangential| / mu F_n (rms)", "");
+  }
+
+  /* oblique impacts, sphere and ellipsoid tip */
+  for (int ell = 0; ell < 2; ell++) {
+    const char *scene = ell ? "oblique impacts 5-80 deg, ellipsoid tip's patch (b/a 0.56)"
+                            : "oblique impacts 5-80 deg (alumina spheres, Chung & Ooi)";
+    const law_row orows[] = {
+        {"cmd_tangential", -1, 1},
+        {"cmd_tangential cmdMemory turningPoints", -3, 0},
+        {"springSliding: Mindlin K_t (stock history)", DC_CT_SPRING_SLIDING, 0},
+        {"diRenzo", DC_CT_DI_RENZO, 0},
+        {"incremental: Mindlin K0", DC_CT_INCREMENTAL, 0},
+    };
+    double bref[NANGLE], b[NANGLE];
+    long steps;
+    dc_classical_tangential none;
+    memset(&none, 0, sizeof none);
+    if (oblique(&none, -1, ell, bref, &steps, &acc)) return 1;
+    for (size_t k = 0; k < sizeof orows / sizeof orows[0]; k++) {
+      dc_classical_tangential m;
+      const double E = 3.8e11, nu = 0.23, G = E / (2.0 * (1.0 + nu));
+      if (law_model(orows[k].law, 0.092, G / (2.0 * (2.0 - nu)), E / (2.0 * (1.0 - nu * nu)), &m) != DC_OK) return 1;
+      if (oblique(&m, orows[k].law, ell, b, &steps, &acc)) return 1;
+      report_err e = {0};
+      for (int i = 0; i < NANGLE; i++) report_err_add(&e, b[i] - bref[i]);
+      double ns;
+      REPORT_TIME(ns, 1, oblique(&m, orows[k].law, ell, NULL, &steps, &acc));
+      char note[64];
+      snprintf(note, sizeof note, "beta at 10 deg %.4f (exact %.4f)", b[1], bref[1]);
+      report_row("tangential", scene, orows[k].name, orows[k].exact, ns / steps, &e,
+                 "max |beta - beta cmd_tangential| over the angles (rms)", note);
+    }
   }
 
   /* rough: sigma = delta and before touch */
@@ -190,7 +303,7 @@ int main(void)
     for (size_t k = 0; k < sizeof rrows / sizeof rrows[0]; k++) {
       dc_classical_tangential m;
       patch = k >= 2 ? smooth : rough;
-      if (law_model(rrows[k].law, Gstar, Estar, &m) != DC_OK) return 1;
+      if (law_model(rrows[k].law, MU, Gstar, Estar, &m) != DC_OK) return 1;
       run(&m, rrows[k].law, F, &acc);
       report_err e = {0};
       for (int i = 0; i < nstep; i++) report_err_add(&e, (F[i] - Fref[i]) / (MU * rs.F));

@@ -7,7 +7,9 @@ those exact to rounding too); and figures the headers state: the integrator repr
 exact restitution, the notes' Tsuji coefficient rebounds within 0.06 % of
 e, the tabulated GW law is within its stated 1e-4 of the solver, the
 solver converges with m, stock superquadric hertz misses the exact force by
-more than 10 %. Then report_table.py merges the rows (without LIGGGHTS
+more than 10 %, cmd_tangential's turningPoints equals the exact profile on
+the shear cycles (constant load, 3 turning points) and stock history's
+spring is 30 % of mu F_n off. Then report_table.py merges the rows (without LIGGGHTS
 scenes) into table.csv and table.md.
 
 Usage: check_report.py BENCH_BIN_DIR WORK_DIR"""
@@ -70,6 +72,12 @@ def main():
     sq = "superquadric pairs 1.5:2.5:3.5 mm blockiness 2-4"
     check(float(law[(sq, "stock hertz: volume-equivalent radius")]["error_rms"]) > 0.1,
           "stock hertz misses the elliptic force by more than 10 % (rms)")
+
+    shear = "shear cycles 0.5 and 2 slip distances"
+    tp = float(law[(shear, "cmd_tangential cmdMemory turningPoints")]["error"])
+    spring = float(law[(shear, "springSliding: Mindlin K_t (stock history)")]["error"])
+    check(tp < 1e-12, "turningPoints on the shear cycles (3 turning points, constant load): %g mu F_n of the exact law" % tp)
+    check(spring > 0.3, "stock history's spring on the shear cycles: %g mu F_n off (> 0.3)" % spring)
 
     scenes = os.path.join(work, "scenes.csv")
     open(scenes, "w").write("family,scene,law,kernel_law,exact,run_ratio,error,metric,note\n")
