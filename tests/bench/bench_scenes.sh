@@ -99,6 +99,10 @@ configs=(
   "sth|$sph|hertz|10000|1|-var jitter 2e-4"
   "st|$sph|hertz|10000|1|-var tmodel cmd_tangential -var jitter 2e-4"
   "qt|$sq|hertz_elliptic|15000|1|-var tmodel cmd_tangential"
+  # cmd_tangential's bounded memory (cmdMemory turningPoints): the packing,
+  # the superquadric packing and the settled bed
+  "stp|$sph|hertz_elliptic|10000|1|-var tmodel cmd_tangential -var jitter 2e-4 -var tkey cmdMemory -var tval turningPoints"
+  "qtp|$sq|hertz_elliptic|15000|1|-var tmodel cmd_tangential -var tkey cmdMemory -var tval turningPoints"
   "qh|$sq|hertz|15000|1|"
   "qe|$sq|hertz_elliptic|15000|1|"
   "q2|$sq|hertz_elliptic|15000|2|"
@@ -118,6 +122,7 @@ configs=(
   "sse2|$ss|hertz_elliptic|20000|2|-var rfile $prep/ss_hertz_elliptic.restart"
   "ssc|$ss|hertz_elliptic|20000|1|-var tmodel cmd_tangential -var rfile $prep/ss_hertz_elliptic_cmd.restart"
   "ssc2|$ss|hertz_elliptic|20000|2|-var tmodel cmd_tangential -var rfile $prep/ss_hertz_elliptic_cmd.restart"
+  "sst|$ss|hertz_elliptic|20000|1|-var tmodel cmd_tangential -var tkey cmdMemory -var tval turningPoints -var rfile $prep/ss_hertz_elliptic_tp.restart"
   "sqh|$sqs|hertz|10000|1|-var rfile $prep/sq_hertz.restart"
   "sqh2|$sqs|hertz|10000|2|-var rfile $prep/sq_hertz.restart"
   "sqe|$sqs|hertz_elliptic|10000|1|-var rfile $prep/sq_hertz_elliptic.restart"
