@@ -737,6 +737,10 @@ class TangentialLaw(collections.namedtuple("TangentialLaw", "name line line_roug
 TANGENTIAL_LAWS = [
     TangentialLaw("tangential history", "tangential history", "tangential history",
                   ("tangential", "stock tangential history"), lambda m: abs(m["beta_cmd"] - m["beta_history"])),
+    TangentialLaw("cmd_tangential cmdMemory turningPoints", "tangential cmd_tangential cmdMemory turningPoints",
+                  "tangential cmd_tangential cmdMemory turningPoints tangentialRoughness on  (the summits' stiffness, "
+                  "with gw_rough)", ("tangential", "cmd_tangential cmdMemory turningPoints"),
+                  lambda m: abs(m["beta_cmd"] - m["beta_turning_points"])),
     TangentialLaw("cmd_tangential", "tangential cmd_tangential",
                   "tangential cmd_tangential tangentialRoughness on  (the summits' stiffness, with gw_rough)",
                   ("tangential", "cmd_tangential"), lambda m: 0.0),   # the exact law: the reference
@@ -759,9 +763,10 @@ def effect_tangential_memory(c):
         return not_assessed("no friction (coefficientFriction 0 or absent)")
     m = c.m
     law = cheapest_within(TANGENTIAL_LAWS, m, c.tol, c.s.costs)
-    return Advice("tangential restitution of a 45-degree impact: %s with spring-sliding, %s with Cattaneo-Mindlin "
-                  "(slip distance %s m, one impact moves %s of them)" % (
-                      fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
+    return Advice("tangential restitution of a 45-degree impact: %s with spring-sliding, %s with Cattaneo-Mindlin, "
+                  "%s with its bounded memory (slip distance %s m, one impact moves %s of them)" % (
+                      fmt(m["beta_history"]), fmt(m["beta_cmd"]), fmt(m["beta_turning_points"]),
+                      fmt(m["slip_distance"]), fmt(m["slip_ratio"])),
                   law.name, c.s.cost(law.name), law.line_rough if c.needs.get("roughness") == "gw_rough" else law.line)
 
 
@@ -804,16 +809,24 @@ def check_contact_distance(c, deck, models):
 # ------------------------------------------------------------ the deck's own models
 
 # Per effect with a richer law: the law, whether the deck's pair_style has it
-# (of its model, tangential and cohesion words), which of its words the
-# verdict names, and whether a deck that has the law without the need pays
-# for it (of the particle classes); in the order the verdicts print.
-DeckCheck = collections.namedtuple("DeckCheck", "effect model has shown pays")
+# (of its model, tangential and cohesion words and cmdMemory setting), which
+# of its words the verdict names, whether a deck that has the law without the
+# need pays for it (of the particle classes), which advised laws it is (of
+# the needs column; default: those that begin with its name) and whether the
+# check applies to the deck at all; in the order the verdicts print.
+DeckCheck = collections.namedtuple("DeckCheck", "effect model has shown pays needs applies")
+DeckCheck.__new__.__defaults__ = (None, None)
 DECK_CHECKS = [
     DeckCheck("plasticity", "jamari_ep", lambda h: h["model"] == "jamari_ep", "model", None),
     DeckCheck("adhesion", "jkr_elliptic", lambda h: h["model"] == "jkr_elliptic" or h["cohesion"] not in ("off", "-"),
               "model", None),
     DeckCheck("roughness", "gw_rough", lambda h: h["model"] == "gw_rough", "model", None),
     DeckCheck("tangential memory", "cmd_tangential", lambda h: h["tangential"] == "cmd_tangential", "tangential", None),
+    # a deck with cmd_tangential: the exact profile where a contact needs it,
+    # the bounded memory (cmdMemory turningPoints) where that is within the tolerance
+    DeckCheck("tangential memory", "cmd_tangential's exact profile (cmdMemory profile)",
+              lambda h: h["cmdMemory"] != "turningPoints", "cmdMemory", None, lambda n: n == "cmd_tangential",
+              lambda h: h["tangential"] == "cmd_tangential"),
     DeckCheck("shape", "hertz_elliptic",
               lambda h: h["model"] in ("hertz_elliptic", "jkr_elliptic", "gw_rough", "jamari_ep"), "model",
               lambda parts: any("shape" in p for p in parts)),   # spheres: the elliptic law costs nothing more
@@ -823,14 +836,17 @@ DECK_CHECKS = [
 def deck_verdicts(deck, rows, parts):
     """a richer law a contact needs that the deck lacks, or one the deck pays for that no assessed contact needs"""
     words = deck.pair[0] if deck.pair else []
-    have = {"model": "-", "tangential": "-", "cohesion": "off"}
+    have = {"model": "-", "tangential": "-", "cohesion": "off", "cmdMemory": "profile"}
     for key in have:
         if key in words and words.index(key) + 1 < len(words):
             have[key] = words[words.index(key) + 1]
     verdicts = []
     for chk in DECK_CHECKS:
+        if chk.applies and not chk.applies(have):
+            continue
         has = chk.has(have)
-        needed = any(r[1] == chk.effect and r[3].startswith(chk.model) for r in rows)
+        needs = chk.needs or (lambda n, m=chk.model: n.startswith(m))
+        needed = any(r[1] == chk.effect and needs(r[3]) for r in rows)
         assessed = any(r[1] == chk.effect and r[3] != "-" for r in rows)
         if needed and not has:
             verdicts.append("%s: the contacts need %s; the deck has %s" % (chk.effect, chk.model, have[chk.shown]))

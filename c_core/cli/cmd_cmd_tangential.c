@@ -30,13 +30,13 @@ typedef union {
 
 /* The contact moved from tangential displacement u0 to u1 along x in
    `steps` equal law steps; out holds the last step's; returns a dc_status. */
-static int leg(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *pa, double u0, double u1, int steps,
-               history *h, dc_cmd_out *o)
+static int leg(const dc_cmd_params *p, int memory, const dc_mindlin_pair *m, const dc_patch *pa, double u0, double u1,
+               int steps, history *h, dc_cmd_out *o)
 {
   const double n[3] = {0.0, 0.0, 1.0};
   for (int i = 0; i < steps; i++) {
     const double du[3] = {(u1 - u0) / steps, 0.0, 0.0};
-    const int st = p->memory ? dc_cmdtp_step(p, m, pa, n, du, 0.0, 1.0, &h->turning_points, o)
+    const int st = memory ? dc_cmdtp_step(p, m, pa, n, du, 0.0, 1.0, &h->turning_points, o)
                              : dc_cmd_step(p, m, pa, n, du, 0.0, 1.0, &h->profile, o);
     if (st) return st;
   }
@@ -93,7 +93,8 @@ static int cmd_cmd_tangential(int argc, char **argv)
     return 2;
   }
   const double memory = dc_cli_get(o, "memory");
-  dc_cmd_params p = {mu, 0.0, 0, 0, memory == 1.0};
+  const int mem = memory == 1.0;
+  dc_cmd_params p = {mu, 0.0, 0, 0};
   dc_param_error err;
   if (memory != 0.0 && memory != 1.0) {
     fprintf(stderr, "dclaw cmd_tangential: --memory: %g is outside {0 (profile), 1 (turningPoints)}\n", memory);
@@ -161,13 +162,13 @@ static int cmd_cmd_tangential(int argc, char **argv)
 
   if (dc_cli_get(o, "summary") != 0.0) {
     /* one cycle +u -> -u -> +u after the virgin leg, trapezoid on the steps */
-    if ((st = leg(&p, &m, &pa, 0.0, u, steps * n, &h, &out))) goto fail;
+    if ((st = leg(&p, mem, &m, &pa, 0.0, u, steps * n, &h, &out))) goto fail;
     const double Fa = out.Ft[0];
     double W = 0.0, F0 = Fa;
     for (int s = 0; s < 2 && !st; s++) {
       const double from = s ? -u : u, to = s ? u : -u, du = (to - from) / (steps * n);
       for (int i = 0; i < steps * n && !st; i++) {
-        st = leg(&p, &m, &pa, 0.0, du, 1, &h, &out);
+        st = leg(&p, mem, &m, &pa, 0.0, du, 1, &h, &out);
         W += 0.5 * (F0 + out.Ft[0]) * du;
         F0 = out.Ft[0];
       }
@@ -191,7 +192,7 @@ static int cmd_cmd_tangential(int argc, char **argv)
     const double from = l == 0 ? 0.0 : l == 1 ? u : -u, to = l == 1 ? -u : u;
     for (int i = 0; i < n; i++) {
       const double target = dc_cli_range(from, to, i, n);
-      if (target != at && (st = leg(&p, &m, &pa, at, target, steps, &h, &out))) goto fail;
+      if (target != at && (st = leg(&p, mem, &m, &pa, at, target, steps, &h, &out))) goto fail;
       at = target;
       const double v[] = {l, at, out.Ft[0], out.stick, out.kt};
       if (dc_cli_row("cmd_tangential", o, cols, 5, v)) return 2;

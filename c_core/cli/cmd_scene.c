@@ -11,6 +11,7 @@
 #include "dc/classical_normal.h"
 #include "dc/classical_tangential.h"
 #include "dc/cmd_tangential.h"
+#include "dc/cmd_turning_points.h"
 #include "dc/gw_rough.h"
 #include "dc/jamari_ep.h"
 #include "dc/jkr_sphere.h"
@@ -79,14 +80,15 @@ static int jkr_separation_work(double R, double Estar, double w, double *W)
    contact point's tangential speed after over before. Spheres of effective
    mass m: the slip speed s changes by -7/2 F_t / m (translation and the
    rolling of both, I = 2/5 m R^2). Tangential law: Cattaneo-Mindlin (cmd
-   1) or spring-sliding with Mindlin's stiffness (cmd 0, LIGGGHTS' stock
-   history), stepped on the Hertz patch; symplectic Euler at Tc/4000.
+   1: the exact profile, 2: cmdMemory turningPoints) or spring-sliding
+   with Mindlin's stiffness (cmd 0, LIGGGHTS' stock history), stepped on
+   the Hertz patch; symplectic Euler at Tc/4000.
    rolled (NULL: not wanted): the distance the contact rolls. */
 static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double Estar, double mu,
                         const dc_hertz_geom *g, double me, double v, double vt, double Tc, double *beta,
                         double *rolled)
 {
-  const dc_cmd_params cp = {mu, 0.0, 0, 0, 0};
+  const dc_cmd_params cp = {mu, 0.0, 0, 0};
   const dc_classical_tangential_params sp = {DC_CT_SPRING_SLIDING, DC_CT_KT_MINDLIN, DC_CT_DAMP_NONE, mu, 0.0, 0.0,
                                              0.0, Gstar, Estar, 0.0, 0.0};
   dc_classical_tangential ct;
@@ -97,6 +99,8 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
   const double n[3] = {0.0, 0.0, 1.0}, dt = Tc / 4000.0;
   dc_cmd_state hc;
   memset(&hc, 0, sizeof hc);
+  dc_cmdtp_state ht;
+  memset(&ht, 0, sizeof ht);
   dc_classical_tangential_state hs;
   memset(&hs, 0, sizeof hs);
   /* the rolled distance: the rolling speed of the kinematics (dc/rolling_kalker.h)
@@ -123,7 +127,9 @@ static int oblique_beta(int cmd, const dc_mindlin_pair *mp, double Gstar, double
     double Ft;
     if (cmd) {
       dc_cmd_out o;
-      if ((st = dc_cmd_step(&cp, mp, &pa, n, du, 0.0, dt, &hc, &o))) return st;
+      if ((st = cmd == 2 ? dc_cmdtp_step(&cp, mp, &pa, n, du, 0.0, dt, &ht, &o)
+                         : dc_cmd_step(&cp, mp, &pa, n, du, 0.0, dt, &hc, &o)))
+        return st;
       Ft = o.Ft[0];
     } else {
       dc_classical_tangential_out o;
@@ -259,23 +265,24 @@ static int cmd_scene(int argc, char **argv)
      impact, vt times its duration */
   const double slip = mu > 0.0 ? 3.0 * mu * col.Fmax / (16.0 * Gstar * imp.a) : 0.0, ut = vt * col.Tc;
   /* the oblique impact's tangential restitution under both tangential laws */
-  double beta_cmd = 0.0, beta_hist = 0.0, rolled = 0.0;
+  double beta_cmd = 0.0, beta_hist = 0.0, beta_tp = 0.0, rolled = 0.0;
   if (mu > 0.0 && vt > 0.0 &&
       ((st = oblique_beta(1, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_cmd, &rolled)) ||
-       (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist, NULL))))
+       (st = oblique_beta(0, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_hist, NULL)) ||
+       (st = oblique_beta(2, &mp, Gstar, Estar, mu, &g, me, v, vt, col.Tc, &beta_tp, NULL))))
     goto range;
   const char *cols =
     "R,Estar,Gstar,meff,weight,T_rayleigh,t_c,dt_over_T_rayleigh,steps_per_collision,delta_max,F_max,a_max,"
     "delta_rest,a_rest,fessler,delta_n1,v_yield,plastic_ratio,e_plastic,tabor,pulloff,pulloff_over_weight,"
     "pulloff_over_F_max,sigma_over_delta_rest,sigma_over_delta_max,rough_force_rest,rough_force_max,"
     "slip_distance,u_t,slip_ratio,jkr_separation,rough_reach,W_separation,v_stick,beta_cmd,beta_history,rolled_semi_axes,"
-    "md_reach";
+    "md_reach,beta_turning_points";
   printf("%s\n", cols);
   const double row[] = {R, Estar, Gstar, me, W, TR, col.Tc, dt / TR, col.Tc / dt, col.dmax, col.Fmax, imp.a,
                         d_rest, rest.a, fessler, d_n1, v_yield, H > 0.0 ? dmax_plastic / d_n1 : 0.0, e_plastic, tabor, pulloff,
                         W > 0.0 ? pulloff / W : 0.0, pulloff / col.Fmax, d_rest > 0.0 ? sigma / d_rest : 0.0, sigma / col.dmax, rough_rest,
                         rough_imp, slip, ut, slip > 0.0 ? ut / slip : 0.0, jkr_break, rough_reach, W_sep,
-                        v_stick, beta_cmd, beta_hist, rolled / imp.a, md_reach};
+                        v_stick, beta_cmd, beta_hist, rolled / imp.a, md_reach, beta_tp};
   return dc_cli_row("scene", o, cols, (int)(sizeof row / sizeof row[0]), row);
 range:
   fprintf(stderr, "dclaw scene: --R1, --R2, --E1, --E2, --rho1, --v, --g: %s (a figure of the scene leaves the doubles)\n",

@@ -37,10 +37,6 @@ int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err)
     err->name = "cmdTwisting"; err->value = (double)p->twisting; err->range = "{0 (off), 1 (on)}";
     return DC_EDOM;
   }
-  if (p->memory != 0 && p->memory != 1) {
-    err->name = "cmdMemory"; err->value = (double)p->memory; err->range = "{0 (profile), 1 (turningPoints)}";
-    return DC_EDOM;
-  }
   return DC_OK;
 }
 

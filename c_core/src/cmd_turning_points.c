@@ -49,8 +49,8 @@ static inline double theta2_of(double q, double y0)
   if (!(q > 0.0)) return 1.0;
   const double r = (1.0 - q) * (1.0 - q), y03 = y0 * y0 * y0;
   if (!(fabs(y03 - r) <= 3e-3 * r)) return cbrt(r);
-  const double y1 = (2.0 * y03 + r) / (3.0 * y0 * y0);
-  return (2.0 * y1 * y1 * y1 + r) / (3.0 * y1 * y1);
+  const double y1 = (2.0 * y03 + r) / (3.0 * y0 * y0), y = (2.0 * y1 * y1 * y1 + r) / (3.0 * y1 * y1);
+  return y < 1.0 ? y : 1.0;
 }
 
 /* One quantity's memory while a step works on it. */
@@ -89,7 +89,9 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       /* a smaller limit clips the slipping annulus: the force falls by
          (S_prev - S)(1 - theta) along its branch (Eq. 70), and turning
          points outside the new limit are drawn onto it */
-      const double red = (Sp - S) * (1.0 - sqrt(th2)), f = xm > red ? (xm - red) / xm : 0.0;
+      const double red = (Sp - S) * (1.0 - sqrt(th2));
+      double f = xm > red ? (xm - red) / xm : 0.0;
+      if (f * xm > m * S) f = m * S / xm;   /* within the branch's range */
       for (int c = 0; c < dim; c++) {
         X[c] *= f;
         s->F[c] = A[c] + X[c];
@@ -113,8 +115,11 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
   }
   const double dm = vnorm(dim, d);
   if (dm > 0.0) {
-    double e[3], sa;
-    const double dp = xm > 0.0 ? (dim == 1 ? d[0] * X[0] : dc_dot3(d, X)) / xm : 0.0;
+    double e[3], sa, dp = 0.0;
+    if (xm > 0.0) {   /* the branch's direction, and the displacement along it */
+      for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
+      dp = dim == 1 ? d[0] * e[0] : dc_dot3(d, e);
+    }
     if (dp < 0.0) {
       /* reversal: F pushed (the newest turning point forgotten with the
          one before when the memory is full) */
@@ -126,8 +131,6 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       th2 = 1.0;
     }
     if (xm > 0.0) {
-      const double ix = 1.0 / xm;
-      for (int c = 0; c < dim; c++) e[c] = X[c] * ix;
       sa = dp;
       if (dim == 3) {   /* the part across X turns it with the stuck core's stiffness */
         const double kth = k * sqrt(th2);
@@ -178,7 +181,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
     }
     for (int c = 0; c < dim; c++) s->F[c] = A[c] + e[c] * xm;
   }
-  s->c2 = 1.0 - th2;
+  s->c2 = th2 < 1.0 ? 1.0 - th2 : 0.0;
   if (s->nt) {   /* |F| <= S; full slip clears the memory (the virgin branch is within it) */
     const double fm = vnorm(dim, s->F);
     if (fm >= S) {
@@ -326,6 +329,14 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     for (int c = 0; c < 3; c++) f.T[j][c] = h->T[j][c];
   turn_plane(h->n_prev, nh, &f);
   const double th = mem_step(3, &f, d, k, S, h->S_prev);
+  {   /* in the plane and within the limit to rounding (a subnormal
+         force's direction has few bits) */
+    const double fn = dc_dot3(f.F, nh);
+    for (int c = 0; c < 3; c++) f.F[c] -= fn * nh[c];
+    const double fm = vnorm(3, f.F);
+    if (fm > S)
+      for (int c = 0; c < 3; c++) f.F[c] *= S / fm;
+  }
   double F[3] = {f.F[0], f.F[1], f.F[2]};
   double kt = th * k;
   if (ell) {
@@ -373,7 +384,7 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
   /* the turning points are earlier forces (turned, or scaled down): finite
      when the force is */
   const double fin = ((dc_nf(F[0]) + dc_nf(F[1])) + (dc_nf(F[2]) + dc_nf(kt))) +
-                     ((dc_nf(f.F[0]) + dc_nf(f.F[1])) + (dc_nf(f.F[2]) + dc_nf(f.c2))) + (dc_nf(Mt) + dc_nf(kr));
+                     ((dc_nf(f.F[0]) + dc_nf(f.F[1])) + (dc_nf(f.F[2]) + dc_nf(f.c2))) + ((dc_nf(Mt) + dc_nf(kr)) + dc_nf(th));
   if (fin != 0.0) return DC_ERANGE;
 
   for (int c = 0; c < 3; c++) out->Ft[c] = F[c];

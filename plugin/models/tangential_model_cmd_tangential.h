@@ -129,7 +129,6 @@ public:
         p.t_visc = dissipation ? tvisc[i][j] : 0.0;
         p.dissipation = dissipation;
         p.twisting = twisting;
-        p.memory = memory;
         dc_param_error err;
         char msg[256];
         if (dc_cmd_check(&p, &err) != DC_OK) {

@@ -160,7 +160,7 @@ static int oblique(const dc_classical_tangential *m, int law, int ell, double *b
   if (dc_hertz_geometry(R, ell ? 1e-3 : R, &g) != DC_OK) return 1;
   dc_mindlin_pair mp;
   if (dc_mindlin_pair_init(E, nu, E, nu, &mp) != DC_OK) return 1;
-  const dc_cmd_params cp = {mu, 0.0, 0, 0, law == -3};
+  const dc_cmd_params cp = {mu, 0.0, 0, 0};
   const double Tc = 2.87 * pow(mass * mass / (g.R_force * Estar * Estar * v), 0.2), dt = Tc / 4000.0;
   /* the patch's major axis at 30 degrees from the slip (x) on the ellipse */
   const double ax[3] = {ell ? cos(M_PI / 6.0) : 0.0, ell ? sin(M_PI / 6.0) : 0.0, 0.0};

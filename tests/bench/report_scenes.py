@@ -68,6 +68,10 @@ RUNS = {
     # the same law on another jittered lattice: the resolution of the packing figures
     "hertz_seed": packed(model="hertz", seed="15485863"),
     "reference": packed(model="hertz_elliptic", tmodel="cmd_tangential"),
+    # the reference on another jittered lattice: the packing figures' spread under the exact law
+    "reference_seed": packed(model="hertz_elliptic", tmodel="cmd_tangential", seed="15485863"),
+    "turning_points": packed(model="hertz_elliptic", tmodel="cmd_tangential",
+                             settings="tangential_damping on cmdMemory turningPoints"),
 }
 for d in ("tsuji", "viscoelastic", "kuwabaraKono", "none"):
     RUNS["damp_" + d] = packed(model="hertz_elliptic", settings="damping " + d, A="{A}", eta="{eta}")
@@ -112,6 +116,8 @@ ROWS = [
      "%s_%s" % (law, k), "hertz", "reference") for law, k in CLASSICAL
 ] + [
     ("tangential", "cmd_tangential", None, "reference", "hertz", "reference"),
+    ("tangential", "cmd_tangential (other jitter seed)", "cmd_tangential", "reference_seed", "hertz", "reference"),
+    ("tangential", "cmd_tangential cmdMemory turningPoints", None, "turning_points", "hertz", "reference"),
     ("tangential", "stock tangential history", "springSliding: Mindlin K_t (stock history)", "hertz", "hertz",
      "reference"),
     ("tangential", "springSliding: Mindlin K_t (stock history)", None, "t_springSliding", "hertz", "reference"),

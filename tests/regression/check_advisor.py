@@ -25,8 +25,9 @@ Effects and probes:
               class meeting head-on (in.probe_pair_impact): the pair's
               restitution change, and whether they stick;
   tangential memory  the contact point's tangential restitution of a
-              45-degree impact, tangential history against cmd_tangential
-              (in.probe_oblique);
+              45-degree impact, tangential history against cmd_tangential,
+              and cmd_tangential's bounded memory (cmdMemory turningPoints)
+              against its exact profile (in.probe_oblique);
   time step   the elastic impact at the deck's dt against dt/50: duration
               and restitution (the error part of the advisor's rule);
   shape       the wall force of 24 superquadrics in random orientations at
@@ -156,17 +157,22 @@ def run_time_step(work, mat, m, v, dt):
 
 
 def run_tangential(work, mat, m, v):
-    """the contact point's tangential restitution of a 45-degree impact, stock history against cmd_tangential"""
+    """the contact point's tangential restitution of a 45-degree impact: stock
+    history against cmd_tangential, and its bounded memory against it
+    (predicted and measured each)"""
     dt = m["t_c"] / 4000.0
     beta = {}
-    for tm in ("history", "cmd_tangential"):
-        regress.run(os.path.join(ROOT, "inputs", "advisor_oblique", "in.probe_oblique"), work, tag="oblique_" + tm,
+    for tm in ("history", "cmd_tangential", "cmd_tangential cmdMemory turningPoints"):
+        regress.run(os.path.join(ROOT, "inputs", "advisor_oblique", "in.probe_oblique"), work,
+                    tag="oblique_" + tm.replace(" ", "_"),
                     variables={"dir": os.path.join(ROOT, "inputs", "advisor_oblique"), "tmodel": tm, "R": mat["R"],
                                "rho": mat["rho"], "E": mat["E"], "nu": mat["nu"], "mu": m["in_mu"], "v": repr(v),
                                "vt": repr(v), "dt": repr(dt), "steps": int(2 * m["t_c"] / dt)})
         last = regress.table(os.path.join(work, "probe.txt"))[-1]
         beta[tm] = (last[2] - mat["R"] * last[4]) / v
-    return abs(m["beta_cmd"] - m["beta_history"]), abs(beta["cmd_tangential"] - beta["history"])
+    tp = "cmd_tangential cmdMemory turningPoints"
+    return (abs(m["beta_cmd"] - m["beta_history"]), abs(beta["cmd_tangential"] - beta["history"]),
+            abs(m["beta_cmd"] - m["beta_turning_points"]), abs(beta["cmd_tangential"] - beta[tp]))
 
 
 def run_pair(work, mat, mp, v, model):
@@ -284,8 +290,16 @@ def main():
                            "(factor 2)" % (name, pred, meas))
                 continue
             elif eff == "tangential memory":
-                pred, meas = run_tangential(wd, mat, m, v)
-                richer = needs[eff] == "cmd_tangential"
+                pred, meas, pred_tp, meas_tp = run_tangential(wd, mat, m, v)
+                richer = needs[eff] != "tangential history"
+                out.append((name, "tangential memory: turningPoints", pred_tp, meas_tp))
+                if richer:
+                    # a Cattaneo-Mindlin law: the bounded memory where its change is within the tolerance
+                    c.true((meas_tp > TOL) == (needs[eff] == "cmd_tangential"),
+                           "%s: turningPoints against the exact profile: measured change %.3g %s the tolerance %g, "
+                           "as the advisor said (%s)" % (name, meas_tp, ">" if meas_tp > TOL else "<=", TOL, needs[eff]))
+                c.true(abs(pred_tp - meas_tp) <= max(0.5 * meas_tp, TOL / 4),
+                       "%s: turningPoints' change predicted %.3g, measured %.3g" % (name, pred_tp, meas_tp))
             elif eff == "time step":
                 pred, meas = run_time_step(wd, mat, m, v, d.dt[0])
                 richer = pred > TOL   # the error part of the advisor's rule (the Rayleigh part is no run's)

@@ -15,7 +15,7 @@ contact beyond the range of Hertz theory (a warning); attached rough adhesive
 summits resumed from a restart with too small a contact distance;
 cohesion gw_adhesion without the normal model it adds to (gw_rough
 gwElliptic on); cmd_tangential's tangentialRoughness without gw_rough or
-with cmdTwisting; an unknown adhesionLaw; adhesionLaw maugis without
+with cmdTwisting; an unknown cmdMemory; an unknown adhesionLaw; adhesionLaw maugis without
 equilibriumSeparation, with it 0; adhesionLaw tabor on superquadrics; jamari_ep under
 LIGGGHTS' sjkr with a cohesive pressure the plastic contact cannot carry.
 Usage: check_deck_errors.py WORKDIR"""
@@ -45,6 +45,7 @@ cases = [
     ("jamari_ep under sjkr with a cohesive pressure above the plastic one", "in.sphere_base", dict(ok, model="jamari_ep tangential history cohesion sjkr", props=props("props_jamari_sjkr"), settings=""), "Normal model jamari_ep: cohesionEnergyDensity = 300000 Pa for types 1 and 1 is not below the largest contact pressure of the plastic contact, plasticityCh x hardness = 10000 Pa: cohesion sjkr would pull"),
     ("tangentialRoughness under hertz_elliptic", "in.sphere_base", dict(ok, model="hertz_elliptic tangential cmd_tangential", settings="tangentialRoughness on"), "Tangential model cmd_tangential: tangentialRoughness on needs the normal model gw_rough"),
     ("tangentialRoughness with cmdTwisting", "in.sphere_base", dict(ok, model="gw_rough tangential cmd_tangential", props=props("props_rough"), settings="tangentialRoughness on cmdTwisting on", cdf="1.2"), "tangentialRoughness on does not take cmdTwisting on"),
+    ("unknown cmdMemory", "in.sphere_base", dict(ok, model="hertz_elliptic tangential cmd_tangential", settings="cmdMemory fewPoints"), "(options: profile turningPoints"),
     ("unknown adhesionLaw", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_jkr"), settings="adhesionLaw bradley"), "(options: dmt jkr maugis tabor"),
     ("adhesionLaw maugis without equilibriumSeparation", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_jkr"), settings="adhesionLaw maugis"), "equilibriumSeparation"),
     ("equilibriumSeparation 0", "in.sphere_base", dict(ok, model="jkr_elliptic tangential history", props=props("props_md_zero"), settings="adhesionLaw tabor"), "Normal model jkr_elliptic: equilibriumSeparation = 0 for types 1 and 1 is outside (0, inf) m"),

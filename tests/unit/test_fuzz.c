@@ -39,6 +39,7 @@
 #include "dc/classical_normal.h"
 #include "dc/classical_tangential.h"
 #include "dc/cmd_tangential.h"
+#include "dc/cmd_turning_points.h"
 #include "dc/contract.h"
 #include "dc/curvature.h"
 #include "dc/damping.h"
@@ -2179,6 +2180,120 @@ static void fuzz_cmd(void)
       for (int i = 0; i < 3; i++) big = fmax(big, lg(du[i]));
       const double *hv = (const double *)&h0;
       for (int i = 0; i < DC_CMD_HISTORY_NFIELDS; i++) big = fmax(big, lg(hv[i]));
+      FZ_EXPECT(f, corrupt || big > LOG_MAX - 6.0, "DC_ERANGE for representable results",
+                "mu %.17g pair %.17g %.17g a %.17g b %.17g F_b %.17g du (%.17g %.17g %.17g) dphi %.17g", p.mu, m.s0, m.s1, a,
+                pa.b, pa.F_bound, du[0], du[1], du[2], dphi);
+    }
+    if (st != DC_OK) {
+      if (U() < 0.5) { memset(&h, 0, sizeof h); corrupt = 0; }
+    } else if (corrupt && U() < 0.2) {
+      memset(&h, 0, sizeof h);
+      corrupt = 0;
+    }
+  }
+  fz_done(f);
+}
+
+/* cmd_turning_points.h: the bounded-memory law on the same inputs as
+   dc_cmd_step (a contact stepped along, the normal turning, the patch and
+   friction load changing every call); now and then a fresh or a
+   corrupted history */
+static void fuzz_cmdtp(void)
+{
+  fz_fn *f = fz_new("dc_cmdtp_step");
+  fz_fn *ftr = fz_new("dc_cmdtp_step_trusted");
+  ftr->seconds = 0.0;
+  dc_cmdtp_state h;
+  memset(&h, 0, sizeof h);
+  int corrupt = 0;
+  double n0[3] = {0.0, 0.0, 1.0};
+  for (long k = 0; k < N_CALLS; k++) {
+    fz_call();
+    if (U() < 0.01) { memset(&h, 0, sizeof h); corrupt = 0; }
+    if (U() < 0.003) {
+      double *hv = (double *)&h;
+      hv[UI(DC_CMDTP_HISTORY_NFIELDS)] = fz_wild();
+      corrupt = 1;
+    }
+    dc_cmd_params p = {A(U() < 0.9 ? U() : 0.0), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0), AI(U() < 0.5), AI(U() < 0.5)};
+    const dc_mindlin_pair m0 = cmd_pair();
+    const dc_mindlin_pair m = {A(m0.s0), A(m0.s1)};
+    double n[3];
+    if (U() < 0.05) unit_vector(n0);
+    else {
+      for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
+      const double l = sqrt(dot3(n0, n0));
+      for (int i = 0; i < 3; i++) n0[i] /= l;
+    }
+    for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
+    dc_patch pa;
+    const double a = A(U() < 0.6 ? fz_log(1e-7, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
+    pa.a = a;
+    pa.b = A(U() < 0.3 ? a : a * (U() < 0.7 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0)));
+    double ax[3];
+    unit_vector(ax);
+    for (int i = 0; i < 3; i++) pa.axis[i] = A(U() < 0.05 ? 0.0 : ax[i]);
+    pa.F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
+    pa.F_elastic = pa.F_bound;
+    pa.formed = A(U() < 0.02 ? 0.0 : 1.0);
+    const double scale = 1.5 * p.mu * pa.F_bound * m.s0 / (8.0 * a + 1e-300);
+    double du[3];
+    for (int i = 0; i < 3; i++) du[i] = A(U() < 0.7 ? scale * fz_sign(fz_log(1e-6, 1e2)) : U() < 0.1 ? 0.0 : fz_wide());
+    const double dphi = A(U() < 0.7 ? scale / (a + 1e-300) * fz_sign(fz_log(1e-6, 1e2)) : fz_wide());
+    const double dt = A(U() < 0.8 ? fz_log(1e-8, 1e-3) : PICK(0.0, -1e-6));
+    const int bad = !ALLFIN(p.mu, a, pa.b, pa.axis[0], pa.axis[1], pa.axis[2], pa.F_bound, pa.formed, n[0], n[1], n[2],
+                            du[0], du[1], du[2], m.s0, m.s1) ||
+                    (p.twisting && !isfinite(dphi)) || (p.dissipation && !ALLFIN(dt, p.t_visc));
+    const double nn = dot3(n, n);
+    double axn = 0.0, axl = 0.0;
+    if (!bad) { axn = dot3(pa.axis, n); axl = dot3(pa.axis, pa.axis); }
+    const int axis_ok = pa.b >= (1.0 - 1e-6) * a || (fabs(axl - 1.0) < 1e-6 && fabs(axn) < 0.99);
+    const int dom = !bad && !corrupt && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
+                    (p.twisting == 0 || p.twisting == 1) && cmd_pair_ok(&m) && pa.F_bound >= 0.0 &&
+                    (a == 0.0 ? pa.b == 0.0 : cmd_axes_ok(a, pa.b)) && fabs(nn - 1.0) <= 1e-6 &&
+                    (!p.dissipation || dt > 0.0) && axis_ok;
+    const dc_cmdtp_state h0 = h;
+    dc_cmd_out o;
+    SENTINEL(o);
+    const int st = dc_cmdtp_step(&p, &m, &pa, n, du, dphi, dt, &h, &o);
+    if (dom) {
+      ftr->seconds -= fz_now();
+      dc_cmdtp_state ht = h0;
+      dc_cmd_out ot;
+      SENTINEL(ot);
+      const int stt = dc_cmdtp_step_trusted(&p, &m, &pa, n, du, dphi, dt, &ht, &ot);
+      fz_count(ftr, stt);
+      FZ_EXPECT(ftr, stt == st && (st != DC_OK || (!memcmp(&ot, &o, sizeof o) && !memcmp(&ht, &h, sizeof h))),
+                "differs from dc_cmdtp_step inside the domain", "status %d vs %d", stt, st);
+      ftr->seconds += fz_now();
+    }
+    const int untouched = UNTOUCHED(o) && !memcmp(&h, &h0, sizeof h);
+    /* the fields in use finite (the force's, and the twist's with twisting;
+       without it the twist's untouched) */
+    int fin_ok = FIN(o) && h.nturn >= 0.0 && h.nturn <= DC_CMDTP_MAX_TURNS;
+    const int used = (int)(offsetof(dc_cmdtp_state, T) / sizeof(double)) + 3 * (fin_ok ? (int)h.nturn : 0);
+    for (int k = 0; k < used; k++) fin_ok &= isfinite(((const double *)&h)[k]);
+    if (p.twisting) fin_ok &= ALLFIN(h.M, h.c2_t, h.S_prev_t) && h.nturn_t >= 0.0 && h.nturn_t <= DC_CMDTP_MAX_TURNS;
+    else fin_ok &= !memcmp(&h.M, &h0.M, sizeof h - DC_CMDTP_FORCE_NFIELDS * sizeof(double));
+    if (st == DC_OK && !bad && pa.formed != 0.0) {
+      const double lim = p.mu * pa.F_bound, F = hypot(hypot(o.Ft[0], o.Ft[1]), o.Ft[2]);
+      fin_ok &= F <= lim * (1.0 + 1e-12) + 4.0 * DBL_TRUE_MIN || !(lim < 1e300);
+      if (fin_ok && F > 1e3 * DBL_MIN) fin_ok &= fabs(o.Ft[0] / F * n[0] + o.Ft[1] / F * n[1] + o.Ft[2] / F * n[2]) <= 1e-12;
+    }
+    FZ_CHECK(f, st, bad, dom, untouched, fin_ok, "mu %.17g pair %.17g %.17g a %.17g b %.17g F_b %.17g formed %.17g n (%.17g %.17g %.17g) du (%.17g %.17g %.17g) dphi %.17g dt %.17g flags %d %d corrupt %d",
+             p.mu, m.s0, m.s1, a, pa.b, pa.F_bound, pa.formed, n[0], n[1], n[2], du[0], du[1], du[2], dphi, dt,
+             p.dissipation, p.twisting, corrupt);
+    /* DC_ERANGE only where a result can overflow: the force scale mu F_b,
+       the stiffnesses ~ a/s0 (a^3/s0 twisting), their products with the
+       displacements, the stored values */
+    if (st == DC_ERANGE) {
+      const double lk = lg(8.0 * a) - lg(m.s0);
+      double big = fmax(lg(p.mu) + lg(pa.F_bound), lk + fmax(0.0, lg(p.t_visc) - lg(dt)));
+      big = fmax(big, fmax(3.0 * lg(a) - lg(m.s0) + 2.0, lg(p.mu) + lg(pa.F_bound) + lg(a)));
+      big = fmax(big, 3.0 * lg(a) - lg(m.s0) + lg(dphi) + 2.0);
+      for (int i = 0; i < 3; i++) big = fmax(big, lg(du[i]) + fmax(lk, 0.0));
+      const double *hv = (const double *)&h0;
+      for (int i = 0; i < DC_CMDTP_HISTORY_NFIELDS; i++) big = fmax(big, lg(hv[i]));
       FZ_EXPECT(f, corrupt || big > LOG_MAX - 6.0, "DC_ERANGE for representable results",
                 "mu %.17g pair %.17g %.17g a %.17g b %.17g F_b %.17g du (%.17g %.17g %.17g) dphi %.17g", p.mu, m.s0, m.s1, a,
                 pa.b, pa.F_bound, du[0], du[1], du[2], dphi);
@@ -4764,6 +4879,7 @@ int main(void)
   FZ_RUN(fuzz_damping);
   FZ_RUN(fuzz_mindlin);
   FZ_RUN(fuzz_cmd);
+  FZ_RUN(fuzz_cmdtp);
   FZ_RUN(fuzz_jamari);
   FZ_RUN(fuzz_root_find);
   FZ_RUN(fuzz_classical_normal);

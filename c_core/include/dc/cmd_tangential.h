@@ -129,12 +129,10 @@ typedef struct {
   double t_visc;    /* tangentialViscoelasticTime A_t = eta/(2G) [s], >= 0 (used with dissipation) */
   int dissipation;  /* setting cmdDissipation: 1 adds Eq. 85 */
   int twisting;     /* setting cmdTwisting: 1 computes the twisting moment */
-  int memory;       /* setting cmdMemory: 0 the exact spring profile (this header), 1 turning points
-                       (dc/cmd_turning_points.h); the wrapper calls that law's step */
 } dc_cmd_params;
 
 /* Parameter check (dc/contract.h): mu >= 0, t_visc >= 0, both finite;
-   flags and memory 0 or 1. DC_OK, or DC_EDOM with err naming the property or setting. */
+   flags 0 or 1. DC_OK, or DC_EDOM with err naming the property or setting. */
 int dc_cmd_check(const dc_cmd_params *p, dc_param_error *err);
 
 /* One piece of a profile, in the per-contact history: its outer radius
