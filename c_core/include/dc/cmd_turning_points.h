@@ -76,10 +76,10 @@ enum { DC_CMDTP_HISTORY_NFIELDS = (int)(sizeof(dc_cmdtp_state) / sizeof(double))
 enum { DC_CMDTP_FORCE_NFIELDS = (int)(offsetof(dc_cmdtp_state, M) / sizeof(double)) };
 extern const dc_history_field dc_cmdtp_history[DC_CMDTP_HISTORY_NFIELDS];
 
-/* One step of one contact: inputs, outputs and errors as dc_cmd_step
-   with h this law's history: nturn (and nturn_t
-   with twisting) a whole number in [0, DC_CMDTP_MAX_TURNS], c2 (c2_t) in
-   [0, 1], S_prev (S_prev_t) >= 0, all finite. On an error h and out are
+/* One step of one contact: inputs, outputs and errors as dc_cmd_step,
+   with h this law's history: nturn (and nturn_t with twisting) a whole
+   number in [0, DC_CMDTP_MAX_TURNS], c2 (c2_t) in [0, 1], S_prev
+   (S_prev_t) >= 0, all finite. On an error h and out are
    untouched. No allocation; the circle skips the elliptic integrals. */
 int dc_cmdtp_step(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch,
                   const double n[3], const double du[3], double dphi, double dt,
