@@ -32,7 +32,8 @@ DC_INLINE double vnorm(int dim, const double *v)
   if (dim == 1) return fabs(v[0]);
   const double s = dc_dot3(v, v);
   if (s >= 1e-300 && s <= 1e300) return sqrt(s);
-  const double m = fmax(fabs(v[0]), fmax(fabs(v[1]), fabs(v[2])));
+  const double a0 = fabs(v[0]), a1 = fabs(v[1]), a2 = fabs(v[2]);
+  const double m = a0 > a1 ? (a0 > a2 ? a0 : a2) : (a1 > a2 ? a1 : a2);
   if (!(m > 0.0) || !isfinite(m)) return m;
   const double x = v[0] / m, y = v[1] / m, z = v[2] / m;
   return m * sqrt(x * x + y * y + z * z);
@@ -40,16 +41,17 @@ DC_INLINE double vnorm(int dim, const double *v)
 
 /* theta^2 = (1 - q)^2/3 of a branch whose force has used the fraction q
    of its range (theta^3 = 1 - q), given y0 near it (the previous step's
-   theta^2): two Newton steps for y^3 = (1 - q)^2 where y0^3 is within
-   0.3 % (a step's load change: then within 1e-12), the cube root
-   otherwise. */
+   theta^2): three Newton steps for y^3 = (1 - q)^2 where y0^3 is within
+   3 % (a step's load change; the relative error squares each step: 1e-2,
+   1e-4, 1e-8, 1e-16), the cube root otherwise. */
 static inline double theta2_of(double q, double y0)
 {
   if (!(q < 1.0)) return 0.0;
   if (!(q > 0.0)) return 1.0;
-  const double r = (1.0 - q) * (1.0 - q), y03 = y0 * y0 * y0;
-  if (!(fabs(y03 - r) <= 3e-3 * r)) return cbrt(r);
-  const double y1 = (2.0 * y03 + r) / (3.0 * y0 * y0), y = (2.0 * y1 * y1 * y1 + r) / (3.0 * y1 * y1);
+  const double r = (1.0 - q) * (1.0 - q);
+  if (!(fabs(y0 * y0 * y0 - r) <= 3e-2 * r)) return cbrt(r);
+  double y = y0;
+  for (int i = 0; i < 3; i++) y = (2.0 * y * y * y + r) / (3.0 * y * y);
   return y < 1.0 ? y : 1.0;
 }
 
@@ -158,7 +160,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       const double mb = s->nt >= 2 ? 2.0 : 1.0;
       double R[3];
       for (int c = 0; c < dim; c++) R[c] = A[c] - (s->nt >= 2 ? s->T[s->nt - 2][c] : 0.0);
-      const double qe = fmin(vnorm(dim, R) / (mb * S), 1.0), q = 1.0 - t3;
+      const double qr = vnorm(dim, R) / (mb * S), qe = qr < 1.0 ? qr : 1.0, q = 1.0 - t3;
       if (q < qe) {
         th2 = t2;
         xm = 2.0 * S * q;
