@@ -41,17 +41,17 @@ DC_INLINE double vnorm(int dim, const double *v)
 
 /* theta^2 = (1 - q)^2/3 of a branch whose force has used the fraction q
    of its range (theta^3 = 1 - q), given y0 near it (the previous step's
-   theta^2): three Newton steps for y^3 = (1 - q)^2 where y0^3 is within
-   3 % (a step's load change; the relative error squares each step: 1e-2,
-   1e-4, 1e-8, 1e-16), the cube root otherwise. */
+   theta^2): four Newton steps for y^3 = (1 - q)^2 where y0^3 is within
+   10 % (a step's load change; the relative error of y squares each step:
+   3e-2, 1e-3, 1e-6, 1e-12, 1e-24), the cube root otherwise. */
 static inline double theta2_of(double q, double y0)
 {
   if (!(q < 1.0)) return 0.0;
   if (!(q > 0.0)) return 1.0;
   const double r = (1.0 - q) * (1.0 - q);
-  if (!(fabs(y0 * y0 * y0 - r) <= 3e-2 * r)) return cbrt(r);
+  if (!(fabs(y0 * y0 * y0 - r) <= 0.1 * r)) return cbrt(r);
   double y = y0;
-  for (int i = 0; i < 3; i++) y = (2.0 * y * y * y + r) / (3.0 * y * y);
+  for (int i = 0; i < 4; i++) y = (2.0 * y * y * y + r) / (3.0 * y * y);
   return y < 1.0 ? y : 1.0;
 }
 
@@ -67,8 +67,12 @@ typedef struct {
    factor m (1 virgin, 2 Masing). */
 DC_INLINE double anchor_of(int dim, const mem *s, double *A)
 {
-  for (int c = 0; c < dim; c++) A[c] = s->nt ? s->T[s->nt - 1][c] : 0.0;
-  return s->nt ? 2.0 : 1.0;
+  if (!s->nt) {
+    for (int c = 0; c < dim; c++) A[c] = 0.0;
+    return 1.0;
+  }
+  for (int c = 0; c < dim; c++) A[c] = s->T[s->nt - 1][c];
+  return 2.0;
 }
 
 /* One quantity's step (header): the limit's change, the displacement d of
