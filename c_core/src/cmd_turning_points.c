@@ -119,9 +119,11 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
     }
     th2 = theta2_of(xm / (m * S), th2);   /* the state is the force */
   }
-  const double dm = vnorm(dim, d);
-  if (dm > 0.0) {
-    double e[3], sa, dp = 0.0;
+  /* a subnormal displacement has too few bits for a direction: none */
+  if (dim == 1 ? fabs(d[0]) >= DBL_MIN : (fabs(d[0]) >= DBL_MIN || fabs(d[1]) >= DBL_MIN || fabs(d[2]) >= DBL_MIN)) {
+    double e[3] = {0.0, 0.0, 0.0}, sa, dp = 0.0;
+    /* a subnormal force has too few bits for a direction: a fresh branch */
+    if (!(xm >= DBL_MIN)) xm = 0.0;
     if (xm > 0.0) {   /* the branch's direction, and the displacement along it */
       for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
       dp = dim == 1 ? d[0] * e[0] : dc_dot3(d, e);
@@ -147,6 +149,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
           for (int c = 0; c < 3; c++) e[c] = Y[c] / ym;
       }
     } else {
+      const double dm = vnorm(dim, d);
       for (int c = 0; c < dim; c++) e[c] = d[c] / dm;
       sa = dm;
     }
@@ -287,7 +290,7 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
   if (tp_counts(p, h, &nf, &ntw) != DC_OK) return DC_EDOM;
   if (checked && tp_check(p, m, patch, n, du, dphi, dt, h) != DC_OK) return DC_EDOM;
   const double a = patch->a, b = patch->b;
-  const double axl = dc_dot3(patch->axis, patch->axis);
+  const double axl = a > b ? dc_dot3(patch->axis, patch->axis) : 0.0;
   if (a > b && !(axl > 0.0) && b < (1.0 - 1e-6) * a) return DC_EDOM;   /* an ellipse needs its axis */
   if (patch->formed == 0.0 || a == 0.0) {   /* the history starts afresh */
     memset(h, 0, p->twisting ? sizeof *h : DC_CMDTP_FORCE_NFIELDS * sizeof(double));
@@ -335,8 +338,9 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     for (int c = 0; c < 3; c++) f.T[j][c] = h->T[j][c];
   turn_plane(h->n_prev, nh, &f);
   const double th = mem_step(3, &f, d, k, S, h->S_prev);
-  {   /* in the plane and within the limit to rounding (a subnormal
-         force's direction has few bits) */
+  {   /* in the plane and within the limit to rounding (an anchor and an
+         excess that nearly cancel, a displacement that dwarfs the normal,
+         a subnormal force) */
     const double fn = dc_dot3(f.F, nh);
     for (int c = 0; c < 3; c++) f.F[c] -= fn * nh[c];
     const double fm = vnorm(3, f.F);
@@ -365,9 +369,10 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     if (isfinite(gm)) {
       const double s = gm > S ? S / gm : 1.0;
       for (int c = 0; c < 3; c++) F[c] = s * G[c];
-    } else {   /* the viscous part dominates: at the limit along d */
+    } else {   /* the viscous part dominates: at the limit along d (a subnormal d has no direction) */
       const double dm = vnorm(3, d);
-      for (int c = 0; c < 3; c++) F[c] = dm > 0.0 ? S * (d[c] / dm) : F[c];
+      if (dm >= DBL_MIN)
+        for (int c = 0; c < 3; c++) F[c] = S * (d[c] / dm);
     }
   }
 
