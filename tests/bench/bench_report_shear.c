@@ -245,8 +245,8 @@ int main(void)
 
   /* oblique impacts, sphere and ellipsoid tip */
   for (int ell = 0; ell < 2; ell++) {
-    const char *scene = ell ? "oblique impacts 5-80 deg, ellipsoid tip's patch (b/a 0.56)"
-                            : "oblique impacts 5-80 deg (alumina spheres, Chung & Ooi)";
+    const char *scene = ell ? "oblique impacts 5-80 deg: ellipsoid tip's patch (b/a 0.56)"
+                            : "oblique impacts 5-80 deg (alumina spheres; Chung & Ooi)";
     const law_row orows[] = {
         {"cmd_tangential", -1, 1},
         {"cmd_tangential cmdMemory turningPoints", -3, 0},
