@@ -154,7 +154,7 @@ classical_laws="springSliding coulomb viscous viscousSliding springDashpotSlidin
 for law in $classical_laws; do
   configs+=("sc_$law|$sph|hertz_elliptic|10000|1|-var tmodel classical -var jitter 2e-4 -var tkey classicalTangential -var tval $law")
 done
-contact_rows="sth seh sep st stc qe qt sre sra spe spa rt rk0 se sjp sje ssc ssc2 srt srr srt0 srr0"
+contact_rows="sth seh sep st stc stp qe qt qtp sst ssh sre sra spe spa rt rk0 se sjp sje ssc ssc2 srt srr srt0 srr0"
 for law in $classical_laws; do contact_rows="$contact_rows sc_$law"; done
 [ "${DC_BENCH_ONLY:-}" = contact ] && DC_BENCH_ONLY="$contact_rows se_again"
 # untimed preparation of the settled scenes: once per restart file named by
@@ -267,7 +267,11 @@ contact += [("hertz_elliptic + classical %s" % k[3:], k, "sth", 1.06) for k in s
             and k != "sc_springSliding" and not k.startswith("base_")]
 contact += [("stock hertz + cmd_tangential", "st", "sth", None),
             ("hertz_elliptic + cmd_tangential", "stc", "sth", 1.25),
+            ("hertz_elliptic + cmd_tangential cmdMemory turningPoints", "stp", "sth", 1.10),
             ("superquadrics: cmd_tangential over hertz_elliptic + history", "qt", "qe", 1.08),
+            ("superquadrics: cmdMemory turningPoints over hertz_elliptic + history", "qtp", "qe", 1.05),
+            ("settled bed (3264): hertz_elliptic + cmd_tangential over stock hertz + history", "ssc", "ssh", None),
+            ("settled bed (3264): cmdMemory turningPoints over stock hertz + history", "sst", "ssh", 1.10),
             ("contactPatch on over off (hertz_elliptic + history)", "sep", "seh", 1.02),
             ("cohesion gw_adhesion over gw_rough gwElliptic on", "sra", "sre", 1.12),
             ("    polydisperse", "spa", "spe", 1.12),
