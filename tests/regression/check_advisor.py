@@ -163,11 +163,13 @@ def run_tangential(work, mat, m, v):
     dt = m["t_c"] / 4000.0
     beta = {}
     for tm in ("history", "cmd_tangential", "cmd_tangential cmdMemory turningPoints"):
+        variables = {"dir": os.path.join(ROOT, "inputs", "advisor_oblique"), "tmodel": tm.split(" ", 1)[0],
+                     "R": mat["R"], "rho": mat["rho"], "E": mat["E"], "nu": mat["nu"], "mu": m["in_mu"], "v": repr(v),
+                     "vt": repr(v), "dt": repr(dt), "steps": int(2 * m["t_c"] / dt)}
+        if " " in tm:
+            variables["tset"] = tm.split(" ", 1)[1]   # the model's settings, after the wall's primitive
         regress.run(os.path.join(ROOT, "inputs", "advisor_oblique", "in.probe_oblique"), work,
-                    tag="oblique_" + tm.replace(" ", "_"),
-                    variables={"dir": os.path.join(ROOT, "inputs", "advisor_oblique"), "tmodel": tm, "R": mat["R"],
-                               "rho": mat["rho"], "E": mat["E"], "nu": mat["nu"], "mu": m["in_mu"], "v": repr(v),
-                               "vt": repr(v), "dt": repr(dt), "steps": int(2 * m["t_c"] / dt)})
+                    tag="oblique_" + tm.replace(" ", "_"), variables=variables)
         last = regress.table(os.path.join(work, "probe.txt"))[-1]
         beta[tm] = (last[2] - mat["R"] * last[4]) / v
     tp = "cmd_tangential cmdMemory turningPoints"
