@@ -89,7 +89,7 @@ BAD_VALUES = [(law + " " + opt, [key]) for law, key, opt in [
     ("jamari_ep", "Estar", "--Estar 1e-300 --H 1e300"),
     ("cmd_tangential", "r", "--r 2"), ("cmd_tangential", "r", "--r 0"), ("cmd_tangential", "mu", "--mu -1"),
     ("cmd_tangential", "Fn", "--Fn 0"), ("cmd_tangential", "nu", "--nu 0.7"), ("cmd_tangential", "u", "--u -1e-6"),
-    ("cmd_tangential", "steps", "--steps 0"),
+    ("cmd_tangential", "steps", "--steps 0"), ("cmd_tangential", "memory", "--memory 2"),
     ("kalker", "b", "--a 1e-3 --b 2e-3"), ("kalker", "model", "--model 3"), ("kalker", "nu", "--nu 0.7"),
     ("kalker", "mu", "--mu -1"), ("kalker", "V", "--V 0"), ("kalker", "Fb", "--Fb -1"),
     ("classical", "law", "--law 1.5"), ("classical", "e", "--law 1 --damping 0 --e 2"), ("classical", "meff", "--meff 0"),
@@ -218,6 +218,12 @@ for r in sorted(energy69):
         worst = max(worst, abs(F - want) / muF)
     check(rc == 0 and len(rows) == 27 and worst < 1e-12,
           "cmd_tangential r %g: virgin, unloading and reloading branches within %.2g mu Fn of Eqs. 59, 67" % (r, worst))
+    # --memory 1: the bounded-memory law on the same loop (two turning points at constant Fn)
+    rc, out, _ = run(args + ["--n", "9", "--memory", "1"])
+    head, rows_tp = csv(out)
+    worst_tp = max(abs(a[2] - b[2]) / muF for a, b in zip(rows, rows_tp))
+    check(rc == 0 and len(rows_tp) == 27 and worst_tp < 1e-12,
+          "cmd_tangential r %g --memory 1 (turningPoints): the same loop within %.2g mu Fn" % (r, worst_tp))
 
 # cmd_tangential --sigma: a rough circle (the GW closed form holds Fn; the
 # summits' patch a_r = (R sigma)^1/2 F_1/2(h), k0 = 8 a_r / (2 s0 - s1))
