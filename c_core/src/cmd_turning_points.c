@@ -105,6 +105,8 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       xm *= f;
       int clipped = 0;
       for (int j = 0; j < s->nt; j++) {
+        const double t2 = dim == 1 ? s->T[j][0] * s->T[j][0] : dc_dot3(s->T[j], s->T[j]);
+        if (t2 <= S * S && t2 >= 1e-300 && S * S <= 1e300) continue;   /* inside, decided by the squares */
         const double tm = vnorm(dim, s->T[j]);
         if (tm > S) {
           for (int c = 0; c < dim; c++) s->T[j][c] *= S / tm;
@@ -206,16 +208,13 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
 /* ------------------------------------------------------------------ */
 /* The step.                                                            */
 
-/* Turns v (normal to a) with the rotation taking the unit a to the unit b
-   (w = a x b, c = a.b, ic = 1/(1 + c)) and removes what is left along b. */
-DC_INLINE void turn(const double *w, double c, double ic, const double *b, double *v)
+/* v <- M v, M the 3x3 matrix of turn_plane */
+DC_INLINE void apply3(const double M[9], double *v)
 {
-  const double wv = dc_dot3(w, v) * ic;
-  const double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
-                       c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
-                       c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
-  const double rn = dc_dot3(r, b);
-  for (int k = 0; k < 3; k++) v[k] = r[k] - rn * b[k];
+  const double x = v[0], y = v[1], z = v[2];
+  v[0] = M[0] * x + M[1] * y + M[2] * z;
+  v[1] = M[3] * x + M[4] * y + M[5] * z;
+  v[2] = M[6] * x + M[7] * y + M[8] * z;
 }
 
 /* Projects v onto the plane normal to b keeping |v| (a turn by nearly pi). */
@@ -235,11 +234,19 @@ DC_INLINE void turn_plane(const double *np0, const double *nh, mem *s)
   if (np0[0] == 0.0 && np0[1] == 0.0 && np0[2] == 0.0) return;   /* fresh */
   const double c = dc_dot3(np0, nh);
   if (c > -0.999) {
-    const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
-                         np0[0] * nh[1] - np0[1] * nh[0]};
-    const double ic = 1.0 / (1.0 + c);
-    turn(w, c, ic, nh, s->F);
-    for (int j = 0; j < s->nt; j++) turn(w, c, ic, nh, s->T[j]);
+    /* the rotation taking np0 to nh (Rodrigues: R = c I + [w]x + w w^T / (1 + c),
+       w = np0 x nh) followed by the projection onto the new plane, one
+       matrix for all vectors: (I - nh nh^T) R = R - nh np0^T */
+    const double w0 = np0[1] * nh[2] - np0[2] * nh[1], w1 = np0[2] * nh[0] - np0[0] * nh[2],
+                 w2 = np0[0] * nh[1] - np0[1] * nh[0], ic = 1.0 / (1.0 + c);
+    const double M[9] = {c + ic * w0 * w0 - nh[0] * np0[0], -w2 + ic * w0 * w1 - nh[0] * np0[1],
+                         w1 + ic * w0 * w2 - nh[0] * np0[2],
+                         w2 + ic * w1 * w0 - nh[1] * np0[0], c + ic * w1 * w1 - nh[1] * np0[1],
+                         -w0 + ic * w1 * w2 - nh[1] * np0[2],
+                         -w1 + ic * w2 * w0 - nh[2] * np0[0], w0 + ic * w2 * w1 - nh[2] * np0[1],
+                         c + ic * w2 * w2 - nh[2] * np0[2]};
+    apply3(M, s->F);
+    for (int j = 0; j < s->nt; j++) apply3(M, s->T[j]);
   } else {
     project_keep(nh, s->F);
     for (int j = 0; j < s->nt; j++) project_keep(nh, s->T[j]);
