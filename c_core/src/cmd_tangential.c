@@ -187,6 +187,31 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, cons
                         int *nout)
 {
   const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
+  {
+    /* Pre-test: both ends inside by a margin tau. |p(t)| - l(t) is convex
+       (l is linear in t), so with c >= tau / (2 max l) <= it at the ends
+       and min l >= 1e-3 max l (implied by the margins), g <= -c min l <=
+       -5e-10 max l^2 on [0, 1]: beyond the rounding of the test below
+       (< 1e-13 max l^2 in A, B, C, with iS = 1 for l0 in this range), which
+       thus finds the same: the whole piece inside. */
+    double n0 = 0.0, n1 = 0.0;
+    for (int k = 0; k < dim; k++) {
+      n0 += p0[k] * p0[k];
+      n1 += p1[k] * p1[k];
+    }
+    const double s0 = l0 * l0, s1 = l1 * l1, tau = 1e-6 * (s0 + s1);
+    if (n0 <= s0 - tau && n1 <= s1 - tau && l0 >= 1e-137 && l0 <= 1e137) {
+      piece *o = &out[(*nout)++];
+      o->x0 = x0;
+      o->x1 = x1;
+      for (int k = 0; k < dim; k++) {
+        o->v0[k] = p0[k];
+        o->v1[k] = p1[k];
+      }
+      o->slip = 0;
+      return;
+    }
+  }
   double q[3], S = l0;
   for (int k = 0; k < dim; k++) {
     q[k] = p1[k] - p0[k];
@@ -273,16 +298,19 @@ DC_INLINE double norm_dir(int dim, const double *I, double *e)
 }
 
 /* Puts each contiguous slipping zone on its limit with one direction, that
-   of its integrated trial values; returns the stuck length (sum of the
-   stuck widths, theta of Eqs. 70-71). */
-DC_INLINE double group(int dim, const piece *pc, int np, double L0, piece *out, int *nout)
+   of its integrated trial values, in place (a zone's piece takes the slot
+   of its first); returns the stuck length (sum of the stuck widths, theta
+   of Eqs. 70-71). */
+DC_INLINE double group(int dim, piece *pc, int np, double L0, int *nout)
 {
   double stick = 0.0;
   int no = 0;
   for (int i = 0; i < np;) {
     if (!pc[i].slip) {
       stick += pc[i].x1 - pc[i].x0;
-      out[no++] = pc[i++];
+      if (no != i) pc[no] = pc[i];
+      no++;
+      i++;
       continue;
     }
     double I[3] = {0.0, 0.0, 0.0};
@@ -301,7 +329,7 @@ DC_INLINE double group(int dim, const piece *pc, int np, double L0, piece *out, 
       xb = pc[j].x1;
       j++;
     } while (j < np && pc[j].slip);
-    piece *o = &out[no++];
+    piece *o = &pc[no++];
     o->x0 = xa;
     o->x1 = xb;
     o->slip = 1;
@@ -482,84 +510,6 @@ DC_INLINE int cap(int dim, piece *pc, int np)
   return np;
 }
 
-/* One step of a profile with dim components: the stored pieces (xi, u0,
-   u1: 1 + 2 dim doubles each) rescaled by r = a_prev / a, the increment d for the
-   stuck springs, entering rim, clamp, group, tidy, cap. Returns the number
-   of pieces in out; *stick and I = int_0^1 u dxi. */
-DC_INLINE int profile_step(int dim, int n, const double *seg, double r, const double *d, double L0, piece *out,
-                           double *stick, double *I)
-{
-  piece trial[MAXP];
-  int np = 0, entered = 0;
-  if (n == 0) {
-    clamp_piece(dim, 0.0, 1.0, d, d, L0, trial, &np);
-  } else {
-    double x0 = 0.0;
-    for (int j = 0; j < n; j++) {
-      const double xs = x0;
-      const double *sj = seg + (1 + 2 * dim) * j;
-      double xe = sj[0] * r;
-      x0 = xe;
-      if (xs >= 1.0) break;
-      double p0[3], p1[3];
-      const double *a0 = sj + 1, *a1 = sj + 1 + dim;
-      if (xe > 1.0) {
-        const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
-        for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
-        xe = 1.0;
-        x0 = 1.0;
-      } else {
-        for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
-      }
-      for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
-      if (xe > xs) clamp_piece(dim, xs, xe, p0, p1, L0, trial, &np);
-    }
-    if (x0 < 1.0) {
-      /* the rim entered during the step (linearly in xi^2): loaded by the
-         part of d after its entry */
-      const double z[3] = {0.0, 0.0, 0.0};
-      clamp_piece(dim, x0, 1.0, d, z, L0, trial, &np);
-      entered = 1;
-    }
-  }
-  int no;
-  *stick = group(dim, trial, np, L0, out, &no);
-  no = tidy(dim, out, no, L0);
-  if (entered && no >= 2 && !out[no - 1].slip && !out[no - 2].slip) {
-    /* a stuck rim grown in this step joins its neighbour when the profile
-       barely changes (mean square change <= (1e-9 L0)^2, the force kept):
-       steady growth makes one piece per step otherwise */
-    piece f;
-    const double c = merge_fit(dim, out, no - 2, &f, NULL);
-    if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
-      out[no - 2] = f;
-      no--;
-    }
-  }
-  no = cap(dim, out, no);
-  for (int k = 0; k < dim; k++) I[k] = 0.0;
-  for (int j = 0; j < no; j++) {
-    const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
-    for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
-  }
-  return no;
-}
-
-static int profile_step3(int n, const dc_cmd_piece *seg, double r, const double *d, double L0, piece *out,
-                         double *stick, double *I)
-{
-  return profile_step(3, n, &seg[0].xi, r, d, L0, out, stick, I);
-}
-
-static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const double *d, double L0, piece *out,
-                         double *stick, double *I)
-{
-  return profile_step(1, n, &seg[0].xi, r, d, L0, out, stick, I);
-}
-
-/* ------------------------------------------------------------------ */
-
-
 /* Turns v (normal to a) with the rotation taking the unit a to the unit b
    (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
    c = a.b, w = a x b), then removes what is left along b. */
@@ -582,6 +532,109 @@ static inline void project_keep(const double *b, double *v)
   const double lr = norm_dir(3, r, r);
   for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
 }
+
+/* The turn of the stored force profile with the contact plane (the
+   three-dimensional rule): Rodrigues from n_prev to the new normal, or,
+   for a turn by nearly pi, the projection keeping |v|. */
+typedef struct {
+  double w[3], c, ic;   /* n_prev x n, n_prev . n, 1 / (1 + c) */
+  const double *nh;     /* the new unit normal */
+  int keep;             /* 1: project_keep */
+} cmd_turn;
+
+DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
+{
+  if (tr->keep) {
+    for (int k = 0; k < 3; k++) out[k] = v[k];
+    project_keep(tr->nh, out);
+  } else {
+    turn(tr->w, tr->c, tr->ic, tr->nh, v, out);
+  }
+}
+
+/* One step of a profile with dim components: the stored pieces (xi, u0,
+   u1: 1 + 2 dim doubles each) turned by tr (dim 3; NULL: not turned) and
+   rescaled by r = a_prev / a, the increment d for the stuck springs,
+   entering rim, clamp, group, tidy, cap. Returns the number of pieces in
+   out; *stick and I = int_0^1 u dxi. */
+DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr, double r, const double *d,
+                           double L0, piece *out, double *stick, double *I)
+{
+  int np = 0, entered = 0;
+  if (n == 0) {
+    clamp_piece(dim, 0.0, 1.0, d, d, L0, out, &np);
+  } else {
+    double x0 = 0.0;
+    for (int j = 0; j < n; j++) {
+      const double xs = x0;
+      const double *sj = seg + (1 + 2 * dim) * j;
+      double xe = sj[0] * r;
+      x0 = xe;
+      if (xs >= 1.0) break;
+      double p0[3], p1[3], t0[3], t1[3];
+      const double *a0 = sj + 1, *a1 = sj + 1 + dim;
+      if (tr) {
+        turn_apply(tr, a0, t0);
+        turn_apply(tr, a1, t1);
+        a0 = t0;
+        a1 = t1;
+      }
+      if (xe > 1.0) {
+        const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
+        for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
+        xe = 1.0;
+        x0 = 1.0;
+      } else {
+        for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
+      }
+      for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
+      if (xe > xs) clamp_piece(dim, xs, xe, p0, p1, L0, out, &np);
+    }
+    if (x0 < 1.0) {
+      /* the rim entered during the step (linearly in xi^2): loaded by the
+         part of d after its entry */
+      const double z[3] = {0.0, 0.0, 0.0};
+      clamp_piece(dim, x0, 1.0, d, z, L0, out, &np);
+      entered = 1;
+    }
+  }
+  int no;
+  *stick = group(dim, out, np, L0, &no);
+  no = tidy(dim, out, no, L0);
+  if (entered && no >= 2 && !out[no - 1].slip && !out[no - 2].slip) {
+    /* a stuck rim grown in this step joins its neighbour when the profile
+       barely changes (mean square change <= (1e-9 L0)^2, the force kept):
+       steady growth makes one piece per step otherwise */
+    piece f;
+    const double c = merge_fit(dim, out, no - 2, &f, NULL);
+    if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
+      out[no - 2] = f;
+      no--;
+    }
+  }
+  no = cap(dim, out, no);
+  for (int k = 0; k < dim; k++) I[k] = 0.0;
+  for (int j = 0; j < no; j++) {
+    const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
+    for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
+  }
+  return no;
+}
+
+static int profile_step3(int n, const dc_cmd_piece *seg, const cmd_turn *tr, double r, const double *d, double L0,
+                         piece *out, double *stick, double *I)
+{
+  return profile_step(3, n, &seg[0].xi, tr, r, d, L0, out, stick, I);
+}
+
+static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const double *d, double L0, piece *out,
+                         double *stick, double *I)
+{
+  return profile_step(1, n, &seg[0].xi, NULL, r, d, L0, out, stick, I);
+}
+
+/* ------------------------------------------------------------------ */
+
 
 /* ------------------------------------------------------------------ */
 /* The step in parts (each inlined: one function's code).              */
@@ -695,48 +748,41 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
   return DC_OK;
 }
 
-/* The stored force profile turned with the contact plane (the
-   three-dimensional rule): h's pieces where the normal has not moved, else
-   copies in S. */
-DC_INLINE const dc_cmd_piece *cmd_turned_profile(const dc_cmd_state *h, const double *nh, int nsu, dc_cmd_piece *S)
+/* How the stored force profile turns with the contact plane: NULL where
+   the normal has not moved, else tr filled. */
+DC_INLINE const cmd_turn *cmd_turn_of(const dc_cmd_state *h, const double *nh, int nsu, cmd_turn *tr)
 {
   const double *np0 = h->n_prev;
-  if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return h->seg;
+  if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return NULL;
   const double c = dc_dot3(np0, nh);
-  if (c > -0.999) {   /* turned straight from h into the copies */
-    const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
-                         np0[0] * nh[1] - np0[1] * nh[0]};
-    const double ic = 1.0 / (1.0 + c);
-    for (int j = 0; j < nsu; j++) {
-      S[j].xi = h->seg[j].xi;
-      turn(w, c, ic, nh, h->seg[j].u0, S[j].u0);
-      turn(w, c, ic, nh, h->seg[j].u1, S[j].u1);
-    }
-  } else {
-    memcpy(S, h->seg, sizeof(dc_cmd_piece) * nsu);
-    for (int j = 0; j < nsu; j++) {
-      project_keep(nh, S[j].u0);
-      project_keep(nh, S[j].u1);
-    }
+  tr->nh = nh;
+  tr->keep = !(c > -0.999);
+  if (!tr->keep) {
+    tr->w[0] = np0[1] * nh[2] - np0[2] * nh[1];
+    tr->w[1] = np0[2] * nh[0] - np0[0] * nh[2];
+    tr->w[2] = np0[0] * nh[1] - np0[1] * nh[0];
+    tr->c = c;
+    tr->ic = 1.0 / (1.0 + c);
   }
-  return S;
+  return tr;
 }
 
 /* The force (Eqs. 59-71: the springs' profile stepped, F = k_major int u
    dxi in the plane), its tangent stiffness along du (Eqs. 68, 70: theta k;
    on an ellipse it depends on the direction), the dissipative force
    (Eq. 85) and the clip onto mu F_bound. Returns the profile's piece
-   count (pieces in pf). */
+   count (pieces in pf); *I_nf: 0 if its integral is finite, else NaN. */
 DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
-                        const dc_cmd_piece *seg, int nsu, double r, double dt, piece *pf, double *F, double *kt_out,
-                        double *stick_out)
+                        const dc_cmd_piece *seg, const cmd_turn *tr, int nsu, double r, double dt, piece *pf,
+                        double *F, double *kt_out, double *stick_out, double *I_nf)
 {
   const double mu = p->mu, Fb = patch->F_bound;
   const double *nh = f->nh;
   /* Coulomb limits L0 (1 - xi^2) integrate to mu F_bound: L0 = 3 mu F_b / (2 k_major) */
   const double L0 = pq(0.75 / M_PI * f->cm, mu, Fb, m->s0, patch->a, 1.0);
   double stick, I[3];
-  const int nfp = profile_step3(nsu, seg, r, f->d, L0, pf, &stick, I);
+  const int nfp = profile_step3(nsu, seg, tr, r, f->d, L0, pf, &stick, I);
+  *I_nf = (dc_nf(I[0]) + dc_nf(I[1])) + dc_nf(I[2]);
   for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
   {
     const double fn = dc_dot3(F, nh);
@@ -779,9 +825,10 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
 
 /* Twisting (Eq. 77, generalised to two bodies; full slip 3/8 mu F a E):
    the twist profile stepped by dphi; returns its piece count (pt), the
-   moment and its tangent stiffness. */
+   moment and its tangent stiffness; adds dc_nf of its integral to *I_nf. */
 DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
-                        const dc_cmd_state *h, int ntu, double r, double dphi, piece *pt, double *Mt_out, double *kr_out)
+                        const dc_cmd_state *h, int ntu, double r, double dphi, piece *pt, double *Mt_out, double *kr_out,
+                        double *I_nf)
 {
   const double a = patch->a, b = patch->b, mu = p->mu, Fb = patch->F_bound;
   double tf = 8.0 / M_PI, E = M_PI / 2.0;   /* circle */
@@ -794,6 +841,7 @@ DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * tf), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
   double st, It;
   const int ntw = profile_step1(ntu, h->seg_t, r, &dphi, Lt, pt, &st, &It);
+  *I_nf += dc_nf(It);
   double Mt = ktw * It;
   if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
   *Mt_out = Mt;
@@ -801,22 +849,22 @@ DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   return ntw;
 }
 
-/* Whether every result is finite (the values to be stored among them). */
-DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, double Mt, double kr, const piece *pf,
-                                 int nfp, const piece *pt, int ntw)
+/* Whether every result is finite (the values to be stored among them).
+   The stored values are when the profiles' integrals are (I_nf == 0):
+   each value enters its integral as h ((1 - w) v0 + w v1), h >= 0,
+   w in [1/3, 1/2], so a non-finite one makes its term and the sum
+   non-finite; the breakpoints lie in [0, 1]. Only an integral that
+   overflowed needs the values checked one by one. */
+DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, double Mt, double kr, double I_nf,
+                                 const piece *pf, int nfp, const piece *pt, int ntw)
 {
   double fin = ((dc_nf(F[0]) + dc_nf(F[1])) + (dc_nf(F[2]) + dc_nf(kt))) + ((dc_nf(stick) + dc_nf(Mt)) + dc_nf(kr));
-  {
-    double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0;
-    for (int j = 0; j < nfp; j++) {
-      f0 += dc_nf(pf[j].x1) + dc_nf(pf[j].v0[0]);
-      f1 += dc_nf(pf[j].v0[1]) + dc_nf(pf[j].v0[2]);
-      f2 += dc_nf(pf[j].v1[0]) + dc_nf(pf[j].v1[1]);
-      f3 += dc_nf(pf[j].v1[2]);
-    }
-    fin += (f0 + f1) + (f2 + f3);
-  }
-  for (int j = 0; j < ntw; j++) fin += dc_nf(pt[j].x1) + (dc_nf(pt[j].v0[0]) + dc_nf(pt[j].v1[0]));
+  if (fin != 0.0) return 0;
+  if (I_nf == 0.0) return 1;
+  for (int j = 0; j < nfp; j++)
+    fin += (dc_nf(pf[j].v0[0]) + dc_nf(pf[j].v0[1])) + (dc_nf(pf[j].v0[2]) + dc_nf(pf[j].v1[0])) +
+           (dc_nf(pf[j].v1[1]) + dc_nf(pf[j].v1[2]));
+  for (int j = 0; j < ntw; j++) fin += dc_nf(pt[j].v0[0]) + dc_nf(pt[j].v1[0]);
   return fin == 0.0;
 }
 
@@ -871,14 +919,14 @@ DC_INLINE int cmd_step(int checked, const dc_cmd_params *p, const dc_mindlin_pai
   const int fresh = !(h->a_prev > 0.0);
   const double r = fresh ? 1.0 : h->a_prev / a;   /* the pieces' radii scale by a_prev / a */
   const int nsu = fresh ? 0 : ns;
-  dc_cmd_piece S[DC_CMD_MAX_SEG];
-  const dc_cmd_piece *seg = cmd_turned_profile(h, f.nh, nsu, S);
+  cmd_turn turn_buf;
+  const cmd_turn *tr = cmd_turn_of(h, f.nh, nsu, &turn_buf);
 
   piece pf[MAXP], pt[MAXP];
-  double F[3], kt, stick, Mt = 0.0, kr = 0.0;
-  const int nfp = cmd_force(p, m, patch, &f, seg, nsu, r, dt, pf, F, &kt, &stick);
-  const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr) : 0;
-  if (!cmd_results_finite(F, kt, stick, Mt, kr, pf, nfp, pt, ntw)) return DC_ERANGE;
+  double F[3], kt, stick, Mt = 0.0, kr = 0.0, I_nf;
+  const int nfp = cmd_force(p, m, patch, &f, h->seg, tr, nsu, r, dt, pf, F, &kt, &stick, &I_nf);
+  const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr, &I_nf) : 0;
+  if (!cmd_results_finite(F, kt, stick, Mt, kr, I_nf, pf, nfp, pt, ntw)) return DC_ERANGE;
 
   for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
   out->kt = kt;
