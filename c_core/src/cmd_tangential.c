@@ -178,15 +178,26 @@ static inline double piece_w(double x0, double x1)
   return s > 0.0 ? (x1 + 2.0 * x0) / (3.0 * s) : 0.5;
 }
 
-/* Splits the trial piece [x0, x1] (end values p0, p1) where it leaves the
+/* The Coulomb limit L0 (1 - xi^2) at xi */
+static inline double limit_at(double L0, double x) { return L0 * ((1.0 - x) * (1.0 + x)); }
+
+/* |v|^2 */
+DC_INLINE double sq(int dim, const double *v)
+{
+  double s = 0.0;
+  for (int k = 0; k < dim; k++) s += v[k] * v[k];
+  return s;
+}
+
+/* Splits the trial piece [x0, x1] (end values p0, p1, their squares n0,
+   n1; limits l0, l1 = limit_at(L0, x0 or x1)) where it leaves the
    Coulomb limit L0 (1 - xi^2): |p(t)|^2 = l(t)^2 is a quadratic in
    t = (xi^2 - x0^2)/(x1^2 - x0^2), both sides being linear in t. Appends
    the parts (slip parts with their trial values; group() puts them on
    the limit). */
-DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, const double *p1, double L0, piece *out,
-                        int *nout)
+DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, const double *p0, const double *p1,
+                           double n0, double n1, piece *out, int *nout)
 {
-  const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
   {
     /* Pre-test: both ends inside by a margin tau. |p(t)| - l(t) is convex
        (l is linear in t), so with c >= tau / (2 max l) <= it at the ends
@@ -194,11 +205,6 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, cons
        -5e-10 max l^2 on [0, 1]: beyond the rounding of the test below
        (< 1e-13 max l^2 in A, B, C, with iS = 1 for l0 in this range), which
        thus finds the same: the whole piece inside. */
-    double n0 = 0.0, n1 = 0.0;
-    for (int k = 0; k < dim; k++) {
-      n0 += p0[k] * p0[k];
-      n1 += p1[k] * p1[k];
-    }
     const double s0 = l0 * l0, s1 = l1 * l1, tau = 1e-6 * (s0 + s1);
     if (n0 <= s0 - tau && n1 <= s1 - tau && l0 >= 1e-137 && l0 <= 1e137) {
       piece *o = &out[(*nout)++];
@@ -372,10 +378,10 @@ DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
       } else if (!p->slip && !q->slip) {
         /* q continued linearly in xi^2 to p's outer end */
         int same = 1;
-        for (int k = 0; k < dim; k++) same &= fabs(q->v1[k] - p->v0[k]) <= tol;
+        for (int k = 0; k < dim && same; k++) same = fabs(q->v1[k] - p->v0[k]) <= tol;
         if (same) {
           const double f = (p->x1 - q->x0) * (p->x1 + q->x0) / ((q->x1 - q->x0) * (q->x1 + q->x0));
-          for (int k = 0; k < dim; k++) same &= fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
+          for (int k = 0; k < dim && same; k++) same = fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
         }
         if (same) {
           q->x1 = p->x1;
@@ -510,19 +516,6 @@ DC_INLINE int cap(int dim, piece *pc, int np)
   return np;
 }
 
-/* Turns v (normal to a) with the rotation taking the unit a to the unit b
-   (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
-   c = a.b, w = a x b), then removes what is left along b. */
-DC_INLINE void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
-{
-  const double wv = dc_dot3(w, v) * ic;
-  double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
-                 c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
-                 c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
-  const double rn = dc_dot3(r, b);
-  for (int k = 0; k < 3; k++) out[k] = r[k] - rn * b[k];
-}
-
 /* Projects v onto the plane normal to b, keeping |v| (a turn by nearly pi). */
 static inline void project_keep(const double *b, double *v)
 {
@@ -534,12 +527,15 @@ static inline void project_keep(const double *b, double *v)
 }
 
 /* The turn of the stored force profile with the contact plane (the
-   three-dimensional rule): Rodrigues from n_prev to the new normal, or,
-   for a turn by nearly pi, the projection keeping |v|. */
+   three-dimensional rule): the rotation R taking the unit a to the unit b
+   (Rodrigues without a square root: R v = c v + w x v + (w.v)/(1+c) w,
+   c = a.b, w = a x b) followed by the removal of what is left along b,
+   as one matrix for the whole profile: (I - b b^T) R = R - b a^T (as
+   R^T b = a); for a turn by nearly pi, the projection keeping |v|. */
 typedef struct {
-  double w[3], c, ic;   /* n_prev x n, n_prev . n, 1 / (1 + c) */
-  const double *nh;     /* the new unit normal */
-  int keep;             /* 1: project_keep */
+  double M[3][3];
+  const double *nh;   /* b, the new unit normal */
+  int keep;           /* 1: project_keep */
 } cmd_turn;
 
 DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
@@ -548,7 +544,7 @@ DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
     for (int k = 0; k < 3; k++) out[k] = v[k];
     project_keep(tr->nh, out);
   } else {
-    turn(tr->w, tr->c, tr->ic, tr->nh, v, out);
+    for (int i = 0; i < 3; i++) out[i] = tr->M[i][0] * v[0] + tr->M[i][1] * v[1] + tr->M[i][2] * v[2];
   }
 }
 
@@ -561,10 +557,11 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
                            double L0, piece *out, double *stick, double *I)
 {
   int np = 0, entered = 0;
+  const double nd = sq(dim, d);
   if (n == 0) {
-    clamp_piece(dim, 0.0, 1.0, d, d, L0, out, &np);
+    clamp_piece(dim, 0.0, 1.0, limit_at(L0, 0.0), limit_at(L0, 1.0), d, d, nd, nd, out, &np);
   } else {
-    double x0 = 0.0;
+    double x0 = 0.0, l0 = limit_at(L0, 0.0);   /* a piece's inner end and its limit */
     for (int j = 0; j < n; j++) {
       const double xs = x0;
       const double *sj = seg + (1 + 2 * dim) * j;
@@ -588,13 +585,15 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
         for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
       }
       for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
-      if (xe > xs) clamp_piece(dim, xs, xe, p0, p1, L0, out, &np);
+      const double l1 = limit_at(L0, xe);
+      if (xe > xs) clamp_piece(dim, xs, xe, l0, l1, p0, p1, sq(dim, p0), sq(dim, p1), out, &np);
+      l0 = l1;
     }
     if (x0 < 1.0) {
       /* the rim entered during the step (linearly in xi^2): loaded by the
          part of d after its entry */
       const double z[3] = {0.0, 0.0, 0.0};
-      clamp_piece(dim, x0, 1.0, d, z, L0, out, &np);
+      clamp_piece(dim, x0, 1.0, l0, limit_at(L0, 1.0), d, z, nd, 0.0, out, &np);
       entered = 1;
     }
   }
@@ -752,17 +751,22 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
    the normal has not moved, else tr filled. */
 DC_INLINE const cmd_turn *cmd_turn_of(const dc_cmd_state *h, const double *nh, int nsu, cmd_turn *tr)
 {
-  const double *np0 = h->n_prev;
-  if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return NULL;
-  const double c = dc_dot3(np0, nh);
+  const double *a = h->n_prev, *b = nh;
+  if (nsu == 0 || (a[0] == b[0] && a[1] == b[1] && a[2] == b[2])) return NULL;
+  const double c = dc_dot3(a, b);
   tr->nh = nh;
   tr->keep = !(c > -0.999);
   if (!tr->keep) {
-    tr->w[0] = np0[1] * nh[2] - np0[2] * nh[1];
-    tr->w[1] = np0[2] * nh[0] - np0[0] * nh[2];
-    tr->w[2] = np0[0] * nh[1] - np0[1] * nh[0];
-    tr->c = c;
-    tr->ic = 1.0 / (1.0 + c);
+    const double w[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double ic = 1.0 / (1.0 + c);
+    for (int i = 0; i < 3; i++)
+      for (int j = 0; j < 3; j++) tr->M[i][j] = (i == j ? c : 0.0) + ic * w[i] * w[j] - b[i] * a[j];
+    tr->M[0][1] -= w[2];
+    tr->M[0][2] += w[1];
+    tr->M[1][0] += w[2];
+    tr->M[1][2] -= w[0];
+    tr->M[2][0] -= w[1];
+    tr->M[2][1] += w[0];
   }
   return tr;
 }
