@@ -544,7 +544,10 @@ DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
     for (int k = 0; k < 3; k++) out[k] = v[k];
     project_keep(tr->nh, out);
   } else {
-    for (int i = 0; i < 3; i++) out[i] = tr->M[i][0] * v[0] + tr->M[i][1] * v[1] + tr->M[i][2] * v[2];
+    const double v0 = v[0], v1 = v[1], v2 = v[2];
+    out[0] = tr->M[0][0] * v0 + tr->M[0][1] * v1 + tr->M[0][2] * v2;
+    out[1] = tr->M[1][0] * v0 + tr->M[1][1] * v1 + tr->M[1][2] * v2;
+    out[2] = tr->M[2][0] * v0 + tr->M[2][1] * v1 + tr->M[2][2] * v2;
   }
 }
 
@@ -757,16 +760,19 @@ DC_INLINE const cmd_turn *cmd_turn_of(const dc_cmd_state *h, const double *nh, i
   tr->nh = nh;
   tr->keep = !(c > -0.999);
   if (!tr->keep) {
-    const double w[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double a0 = a[0], a1 = a[1], a2 = a[2], b0 = b[0], b1 = b[1], b2 = b[2];
+    const double w0 = a1 * b2 - a2 * b1, w1 = a2 * b0 - a0 * b2, w2 = a0 * b1 - a1 * b0;
     const double ic = 1.0 / (1.0 + c);
-    for (int i = 0; i < 3; i++)
-      for (int j = 0; j < 3; j++) tr->M[i][j] = (i == j ? c : 0.0) + ic * w[i] * w[j] - b[i] * a[j];
-    tr->M[0][1] -= w[2];
-    tr->M[0][2] += w[1];
-    tr->M[1][0] += w[2];
-    tr->M[1][2] -= w[0];
-    tr->M[2][0] -= w[1];
-    tr->M[2][1] += w[0];
+    /* c I + ic w w^T - b a^T, then + [w]x */
+    tr->M[0][0] = c + ic * w0 * w0 - b0 * a0;
+    tr->M[0][1] = (0.0 + ic * w0 * w1 - b0 * a1) - w2;
+    tr->M[0][2] = (0.0 + ic * w0 * w2 - b0 * a2) + w1;
+    tr->M[1][0] = (0.0 + ic * w1 * w0 - b1 * a0) + w2;
+    tr->M[1][1] = c + ic * w1 * w1 - b1 * a1;
+    tr->M[1][2] = (0.0 + ic * w1 * w2 - b1 * a2) - w0;
+    tr->M[2][0] = (0.0 + ic * w2 * w0 - b2 * a0) - w1;
+    tr->M[2][1] = (0.0 + ic * w2 * w1 - b2 * a1) + w0;
+    tr->M[2][2] = c + ic * w2 * w2 - b2 * a2;
   }
   return tr;
 }
