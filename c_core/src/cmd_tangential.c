@@ -410,7 +410,7 @@ static inline void moments(double x0, double x1, double *J1, double *J2)
    least, so that a merge does not make the rim slip), u = c0 + c1 phi,
    phi = (xi^2 - xa^2)/(xb^2 - xa^2). Returns the squared L2 change; the
    piece in *f. */
-DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *norm2)
+DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f)
 {
   const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
   double g01, g11;
@@ -445,7 +445,6 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *no
     cross += c0 * m0[k] + c1 * m1[k];
     self += c0 * c0 * g00 + 2.0 * c0 * c1 * g01 + c1 * c1 * g11;
   }
-  if (norm2) *norm2 = e2;
   return e2 - 2.0 * cross + self;
 }
 
@@ -488,30 +487,51 @@ DC_INLINE double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
   return pm[i].e2 + pm[i + 1].e2 - 2.0 * cross + self;
 }
 
+/* The piece of merge_fit(i) from the moments (the same arithmetic). */
+DC_INLINE void merged_piece(int dim, const piece *pc, const pmom *pm, int i, piece *f)
+{
+  const double xa = pc[i].x0, xb = pc[i + 1].x1;
+  double g01, g11;
+  moments(xa, xb, &g01, &g11);
+  const double w = (xb - xa) - g01;
+  f->x0 = xa;
+  f->x1 = xb;
+  f->slip = 0;
+  for (int k = 0; k < dim; k++) {
+    const double vb = pc[i + 1].v1[k], m0 = (0.0 + pm[i].I0[k]) + pm[i + 1].I0[k];
+    f->v0[k] = w > 0.0 ? (m0 - vb * g01) / w : vb;
+    f->v1[k] = vb;
+  }
+}
+
 /* Over DC_CMD_MAX_SEG pieces: merges the cheapest neighbours (least change,
    merge_fit) down to DC_CMD_MAX_SEG - 1, which leaves room for the next
-   step's new piece (a growing patch makes one per step). */
+   step's new piece (a growing patch makes one per step). A merge changes
+   the costs of the merged piece's two pairs only. */
 DC_INLINE int cap(int dim, piece *pc, int np)
 {
   if (np <= DC_CMD_MAX_SEG) return np;
   pmom pm[MAXP];
+  double cost[MAXP];
   for (int i = 0; i < np; i++) piece_moments(dim, &pc[i], &pm[i]);
+  for (int i = 0; i + 1 < np; i++) cost[i] = merge_cost(dim, pc, pm, i);
   while (np > DC_CMD_MAX_SEG - 1) {
     int best = 0;
-    double bc = HUGE_VAL;
-    for (int i = 0; i + 1 < np; i++) {
-      const double c = merge_cost(dim, pc, pm, i);
-      if (c < bc || i == 0) { bc = c; best = i; }
-    }
+    double bc = cost[0];
+    for (int i = 1; i + 1 < np; i++)
+      if (cost[i] < bc) { bc = cost[i]; best = i; }
     piece f;
-    merge_fit(dim, pc, best, &f, NULL);
+    merged_piece(dim, pc, pm, best, &f);
     pc[best] = f;
     piece_moments(dim, &pc[best], &pm[best]);
     for (int i = best + 1; i + 1 < np; i++) {
       pc[i] = pc[i + 1];
       pm[i] = pm[i + 1];
+      cost[i] = cost[i + 1];
     }
     np--;
+    if (best > 0) cost[best - 1] = merge_cost(dim, pc, pm, best - 1);
+    if (best + 1 < np) cost[best] = merge_cost(dim, pc, pm, best);
   }
   return np;
 }
@@ -608,7 +628,7 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
        barely changes (mean square change <= (1e-9 L0)^2, the force kept):
        steady growth makes one piece per step otherwise */
     piece f;
-    const double c = merge_fit(dim, out, no - 2, &f, NULL);
+    const double c = merge_fit(dim, out, no - 2, &f);
     if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
       out[no - 2] = f;
       no--;
