@@ -571,6 +571,20 @@ DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
   }
 }
 
+/* out = turned v + d, rounded as turn_apply then the sum */
+DC_INLINE void turn_add(const cmd_turn *tr, const double *v, const double *d, double *out)
+{
+  if (tr->keep) {
+    turn_apply(tr, v, out);
+    for (int k = 0; k < 3; k++) out[k] += d[k];
+  } else {
+    const double v0 = v[0], v1 = v[1], v2 = v[2];
+    out[0] = tr->M[0][0] * v0 + tr->M[0][1] * v1 + tr->M[0][2] * v2 + d[0];
+    out[1] = tr->M[1][0] * v0 + tr->M[1][1] * v1 + tr->M[1][2] * v2 + d[1];
+    out[2] = tr->M[2][0] * v0 + tr->M[2][1] * v1 + tr->M[2][2] * v2 + d[2];
+  }
+}
+
 /* One step of a profile with dim components: the stored pieces (xi, u0,
    u1: 1 + 2 dim doubles each) turned by tr (dim 3; NULL: not turned) and
    rescaled by r = a_prev / a, the increment d for the stuck springs,
@@ -591,23 +605,32 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
       double xe = sj[0] * r;
       x0 = xe;
       if (xs >= 1.0) break;
-      double p0[3], p1[3], t0[3], t1[3];
+      double p0[3], p1[3];
       const double *a0 = sj + 1, *a1 = sj + 1 + dim;
-      if (tr) {
-        turn_apply(tr, a0, t0);
-        turn_apply(tr, a1, t1);
-        a0 = t0;
-        a1 = t1;
-      }
       if (xe > 1.0) {
+        double t0[3], t1[3];
+        if (tr) {
+          turn_apply(tr, a0, t0);
+          turn_apply(tr, a1, t1);
+          a0 = t0;
+          a1 = t1;
+        }
         const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
-        for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
+        for (int k = 0; k < dim; k++) {
+          p0[k] = a0[k] + d[k];
+          p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
+        }
         xe = 1.0;
         x0 = 1.0;
+      } else if (tr) {
+        turn_add(tr, a0, d, p0);
+        turn_add(tr, a1, d, p1);
       } else {
-        for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
+        for (int k = 0; k < dim; k++) {
+          p0[k] = a0[k] + d[k];
+          p1[k] = a1[k] + d[k];
+        }
       }
-      for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
       const double l1 = limit_at(L0, xe);
       if (xe > xs) clamp_piece(dim, xs, xe, l0, l1, p0, p1, sq(dim, p0), sq(dim, p1), out, &np);
       l0 = l1;
