@@ -160,10 +160,13 @@ int dc_cmd_twist_slip_moment(double mu, double F, double a, double b, double *M)
 
 typedef struct {
   double x0, x1;
-  double v0[3], v1[3];
+  double v0[3], v1[3];   /* x1, v0, v1: a dc_cmd_piece's layout (force) */
   double e[3];   /* slip direction (slipping pieces) */
   int slip;
 } piece;
+_Static_assert(offsetof(piece, v1) + 3 * sizeof(double) - offsetof(piece, x1) == sizeof(dc_cmd_piece) &&
+               offsetof(dc_cmd_piece, u1) - offsetof(dc_cmd_piece, xi) == offsetof(piece, v1) - offsetof(piece, x1),
+               "a force piece is stored with one copy");
 
 static inline double max2(double a, double b) { return a > b ? a : b; }
 
@@ -929,14 +932,7 @@ DC_INLINE void cmd_commit(const dc_cmd_params *p, const double *nh, double a, co
   for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
   h->a_prev = a;
   h->nseg = nfp;
-  for (int j = 0; j < nfp; j++) {
-    dc_cmd_piece *q = &h->seg[j];
-    q->xi = pf[j].x1;
-    for (int k = 0; k < 3; k++) {
-      q->u0[k] = pf[j].v0[k];
-      q->u1[k] = pf[j].v1[k];
-    }
-  }
+  for (int j = 0; j < nfp; j++) memcpy(&h->seg[j], (const char *)&pf[j] + offsetof(piece, x1), sizeof(dc_cmd_piece));
   if (nfp < ns) memset(&h->seg[nfp], 0, sizeof(dc_cmd_piece) * (ns - nfp));
   if (p->twisting) {
     h->nseg_t = ntw;
