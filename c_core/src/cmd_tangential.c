@@ -205,12 +205,12 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
                            double n0, double n1, piece *out, int *nout)
 {
   {
-    /* Pre-test: both ends inside by a margin tau. |p(t)| - l(t) is convex
-       (l is linear in t), so with c >= tau / (2 max l) <= it at the ends
-       and min l >= 1e-3 max l (implied by the margins), g <= -c min l <=
-       -5e-10 max l^2 on [0, 1]: beyond the rounding of the test below
-       (< 1e-13 max l^2 in A, B, C, with iS = 1 for l0 in this range), which
-       thus finds the same: the whole piece inside. */
+    /* Pre-test: both ends inside by tau. |p(t)| - l(t) is convex (l is
+       linear in t), so it is <= -c on [0, 1], c = tau / (2 max l), and the
+       margins give min l >= 1e-3 max l: g = (|p| - l)(|p| + l) <= -c min l
+       <= -5e-10 max l^2. The full test below (iS = 1 for l0 in this range)
+       rounds g, its vertex and A C - B^2 by less than 1e-13 max l^2 (times
+       |A|), so it finds the same: the whole piece inside. */
     const double s0 = l0 * l0, s1 = l1 * l1, tau = 1e-6 * (s0 + s1);
     if (n0 <= s0 - tau && n1 <= s1 - tau && l0 >= 1e-137 && l0 <= 1e137) {
       piece *o = &out[(*nout)++];
@@ -391,7 +391,8 @@ DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
         UNROLL3 for (int k = 0; k < dim && same; k++) same = fabs(q->v1[k] - p->v0[k]) <= tol;
         if (same) {
           const double f = (p->x1 - q->x0) * (p->x1 + q->x0) / ((q->x1 - q->x0) * (q->x1 + q->x0));
-          UNROLL3 for (int k = 0; k < dim && same; k++) same = fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
+          UNROLL3 for (int k = 0; k < dim && same; k++)
+            same = fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
         }
         if (same) {
           q->x1 = p->x1;
@@ -687,9 +688,6 @@ static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const d
 {
   return profile_step(1, n, &seg[0].xi, NULL, r, d, L0, out, stick, I);
 }
-
-/* ------------------------------------------------------------------ */
-
 
 /* ------------------------------------------------------------------ */
 /* The step in parts (each inlined: one function's code).              */
