@@ -157,13 +157,19 @@ int dc_cmd_twist_slip_moment(double mu, double F, double a, double b, double *M)
 
 #define MAXP (3 * (DC_CMD_MAX_SEG + 1) + 4)
 #define SLIVER 1e-13   /* narrower pieces (in xi) join a neighbour */
+/* before a loop over the (at most 3) components: GCC's -O2 leaves such
+   loops rolled, their sums going through memory */
+#define UNROLL3 _Pragma("GCC unroll 3")
 
 typedef struct {
   double x0, x1;
-  double v0[3], v1[3];
+  double v0[3], v1[3];   /* x1, v0, v1: a dc_cmd_piece's layout (force) */
   double e[3];   /* slip direction (slipping pieces) */
   int slip;
 } piece;
+_Static_assert(offsetof(piece, v1) + 3 * sizeof(double) - offsetof(piece, x1) == sizeof(dc_cmd_piece) &&
+               offsetof(dc_cmd_piece, u1) - offsetof(dc_cmd_piece, xi) == offsetof(piece, v1) - offsetof(piece, x1),
+               "a force piece is stored with one copy");
 
 static inline double max2(double a, double b) { return a > b ? a : b; }
 
@@ -178,26 +184,61 @@ static inline double piece_w(double x0, double x1)
   return s > 0.0 ? (x1 + 2.0 * x0) / (3.0 * s) : 0.5;
 }
 
-/* Splits the trial piece [x0, x1] (end values p0, p1) where it leaves the
+/* The Coulomb limit L0 (1 - xi^2) at xi */
+static inline double limit_at(double L0, double x) { return L0 * ((1.0 - x) * (1.0 + x)); }
+
+/* |v|^2 */
+DC_INLINE double sq(int dim, const double *v)
+{
+  double s = 0.0;
+  UNROLL3 for (int k = 0; k < dim; k++) s += v[k] * v[k];
+  return s;
+}
+
+/* Splits the trial piece [x0, x1] (end values p0, p1, their squares n0,
+   n1; limits l0, l1 = limit_at(L0, x0 or x1)) where it leaves the
    Coulomb limit L0 (1 - xi^2): |p(t)|^2 = l(t)^2 is a quadratic in
    t = (xi^2 - x0^2)/(x1^2 - x0^2), both sides being linear in t. Appends
    the parts (slip parts with their trial values; group() puts them on
    the limit). */
-DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, const double *p1, double L0, piece *out,
-                        int *nout)
+DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, const double *p0, const double *p1,
+                           double n0, double n1, piece *out, int *nout)
 {
-  const double l0 = L0 * ((1.0 - x0) * (1.0 + x0)), l1 = L0 * ((1.0 - x1) * (1.0 + x1));
-  double q[3], S = l0;
-  for (int k = 0; k < dim; k++) {
-    q[k] = p1[k] - p0[k];
-    S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
+  {
+    /* Pre-test: both ends inside by tau. |p(t)| - l(t) is convex (l is
+       linear in t), so it is <= -c on [0, 1], c = tau / (2 max l), and the
+       margins give min l >= 1e-3 max l: g = (|p| - l)(|p| + l) <= -c min l
+       <= -5e-10 max l^2. The full test below (iS = 1 for l0 in this range)
+       rounds g, its vertex and A C - B^2 by less than 1e-13 max l^2 (times
+       |A|), so it finds the same: the whole piece inside. */
+    const double s0 = l0 * l0, s1 = l1 * l1, tau = 1e-6 * (s0 + s1);
+    if (n0 <= s0 - tau && n1 <= s1 - tau && l0 >= 1e-137 && l0 <= 1e137) {
+      piece *o = &out[(*nout)++];
+      o->x0 = x0;
+      o->x1 = x1;
+      UNROLL3 for (int k = 0; k < dim; k++) {
+        o->v0[k] = p0[k];
+        o->v1[k] = p1[k];
+      }
+      o->slip = 0;
+      return;
+    }
   }
+  double q[3];
+  UNROLL3 for (int k = 0; k < dim; k++) q[k] = p1[k] - p0[k];
   /* g(t) = |p(t)|^2 - l(t)^2 = A t^2 + 2 B t + C, scaled by 1/S^2 only
-     where the squares could leave the doubles */
-  const double iS = S > 0.0 && (S < 1e-150 || S > 1e150) ? 1.0 / S : 1.0;
+     where the squares could leave the doubles: S = max(l0, |p0|, |p1|)
+     (max norm) outside [1e-150, 1e150]; it lies there (scale 1) when l0
+     does and n0, n1 <= 1e298 (so every |p_k| < 1e150) */
+  double S = 1.0, iS = 1.0;
+  if (!(l0 >= 1e-150 && l0 <= 1e150 && n0 <= 1e298 && n1 <= 1e298)) {
+    S = l0;
+    UNROLL3 for (int k = 0; k < dim; k++) S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
+    iS = S > 0.0 && (S < 1e-150 || S > 1e150) ? 1.0 / S : 1.0;
+  }
   const double la = l0 * iS, dl = (l1 - l0) * iS;
   double A = -dl * dl, B = -la * dl, C = -la * la;
-  for (int k = 0; k < dim; k++) {
+  UNROLL3 for (int k = 0; k < dim; k++) {
     const double ps = p0[k] * iS, qs = q[k] * iS;
     A += qs * qs;
     B += ps * qs;
@@ -214,7 +255,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, cons
     piece *o = &out[(*nout)++];
     o->x0 = x0;
     o->x1 = x1;
-    for (int k = 0; k < dim; k++) {
+    UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = p0[k];
       o->v1[k] = p1[k];
     }
@@ -248,7 +289,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, const double *p0, cons
     o->x0 = i == 0 ? x0 : sqrt(s0 + ta * ds);
     o->x1 = i + 2 == nt ? x1 : sqrt(s0 + tb * ds);
     double g = 0.0;
-    for (int k = 0; k < dim; k++) {
+    UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = i == 0 ? p0[k] : p0[k] + q[k] * ta;
       o->v1[k] = i + 2 == nt ? p1[k] : p0[k] + q[k] * tb;
       const double v = (p0[k] + q[k] * tm) * iS;
@@ -273,16 +314,19 @@ DC_INLINE double norm_dir(int dim, const double *I, double *e)
 }
 
 /* Puts each contiguous slipping zone on its limit with one direction, that
-   of its integrated trial values; returns the stuck length (sum of the
-   stuck widths, theta of Eqs. 70-71). */
-DC_INLINE double group(int dim, const piece *pc, int np, double L0, piece *out, int *nout)
+   of its integrated trial values, in place (a zone's piece takes the slot
+   of its first); returns the stuck length (sum of the stuck widths, theta
+   of Eqs. 70-71). */
+DC_INLINE double group(int dim, piece *pc, int np, double L0, int *nout)
 {
   double stick = 0.0;
   int no = 0;
   for (int i = 0; i < np;) {
     if (!pc[i].slip) {
       stick += pc[i].x1 - pc[i].x0;
-      out[no++] = pc[i++];
+      if (no != i) pc[no] = pc[i];
+      no++;
+      i++;
       continue;
     }
     double I[3] = {0.0, 0.0, 0.0};
@@ -292,22 +336,22 @@ DC_INLINE double group(int dim, const piece *pc, int np, double L0, piece *out, 
     do {
       const double h = pc[j].x1 - pc[j].x0, w = piece_w(pc[j].x0, pc[j].x1);
       double Ij[3], dot = 0.0;
-      for (int k = 0; k < dim; k++) {
+      UNROLL3 for (int k = 0; k < dim; k++) {
         Ij[k] = h * ((1.0 - w) * pc[j].v0[k] + w * pc[j].v1[k]);
         dot += Ij[k] * I[k];
       }
       if (j > i && dot < 0.0) break;   /* opposite slip: a zone of its own */
-      for (int k = 0; k < dim; k++) I[k] += Ij[k];
+      UNROLL3 for (int k = 0; k < dim; k++) I[k] += Ij[k];
       xb = pc[j].x1;
       j++;
     } while (j < np && pc[j].slip);
-    piece *o = &out[no++];
+    piece *o = &pc[no++];
     o->x0 = xa;
     o->x1 = xb;
     o->slip = 1;
     norm_dir(dim, I, o->e);
     const double la = L0 * ((1.0 - xa) * (1.0 + xa)), lb = L0 * ((1.0 - xb) * (1.0 + xb));
-    for (int k = 0; k < dim; k++) {
+    UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = la * o->e[k];
       o->v1[k] = lb * o->e[k];
     }
@@ -334,24 +378,25 @@ DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
       piece *q = &pc[no - 1];
       if (p->slip && q->slip) {
         double d = 0.0;
-        for (int k = 0; k < dim; k++) d += p->e[k] * q->e[k];
+        UNROLL3 for (int k = 0; k < dim; k++) d += p->e[k] * q->e[k];
         if (d > 1.0 - 1e-14) {
           q->x1 = p->x1;
           const double lb = L0 * ((1.0 - q->x1) * (1.0 + q->x1));
-          for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
+          UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
           continue;
         }
       } else if (!p->slip && !q->slip) {
         /* q continued linearly in xi^2 to p's outer end */
         int same = 1;
-        for (int k = 0; k < dim; k++) same &= fabs(q->v1[k] - p->v0[k]) <= tol;
+        UNROLL3 for (int k = 0; k < dim && same; k++) same = fabs(q->v1[k] - p->v0[k]) <= tol;
         if (same) {
           const double f = (p->x1 - q->x0) * (p->x1 + q->x0) / ((q->x1 - q->x0) * (q->x1 + q->x0));
-          for (int k = 0; k < dim; k++) same &= fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
+          UNROLL3 for (int k = 0; k < dim && same; k++)
+            same = fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
         }
         if (same) {
           q->x1 = p->x1;
-          for (int k = 0; k < dim; k++) q->v1[k] = p->v1[k];
+          UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = p->v1[k];
           continue;
         }
       }
@@ -376,7 +421,7 @@ static inline void moments(double x0, double x1, double *J1, double *J2)
    least, so that a merge does not make the rim slip), u = c0 + c1 phi,
    phi = (xi^2 - xa^2)/(xb^2 - xa^2). Returns the squared L2 change; the
    piece in *f. */
-DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *norm2)
+DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f)
 {
   const double xa = pc[i].x0, xb = pc[i + 1].x1, S = (xb - xa) * (xb + xa);
   double g01, g11;
@@ -390,7 +435,7 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *no
     moments(p->x0, p->x1, &J1, &J2);
     const double J0 = p->x1 - p->x0;
     const double lam = (p->x0 - xa) * (p->x0 + xa) / S, kap = (p->x1 - p->x0) * (p->x1 + p->x0) / S;
-    for (int k = 0; k < dim; k++) {
+    UNROLL3 for (int k = 0; k < dim; k++) {
       const double dv = p->v1[k] - p->v0[k];
       const double I0 = p->v0[k] * J0 + dv * J1, Ip = p->v0[k] * J1 + dv * J2;
       m0[k] += I0;
@@ -403,7 +448,7 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *no
   f->x0 = xa;
   f->x1 = xb;
   f->slip = 0;
-  for (int k = 0; k < dim; k++) {
+  UNROLL3 for (int k = 0; k < dim; k++) {
     const double vb = pc[i + 1].v1[k];
     const double c0 = w > 0.0 ? (m0[k] - vb * g01) / w : vb, c1 = vb - c0;
     f->v0[k] = c0;
@@ -411,7 +456,6 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f, double *no
     cross += c0 * m0[k] + c1 * m1[k];
     self += c0 * c0 * g00 + 2.0 * c0 * c1 * g01 + c1 * c1 * g11;
   }
-  if (norm2) *norm2 = e2;
   return e2 - 2.0 * cross + self;
 }
 
@@ -426,7 +470,7 @@ DC_INLINE void piece_moments(int dim, const piece *p, pmom *m)
   moments(p->x0, p->x1, &m->J1, &m->J2);
   m->J0 = p->x1 - p->x0;
   m->e2 = 0.0;
-  for (int k = 0; k < dim; k++) {
+  UNROLL3 for (int k = 0; k < dim; k++) {
     const double dv = p->v1[k] - p->v0[k];
     m->I0[k] = p->v0[k] * m->J0 + dv * m->J1;
     m->Ip[k] = p->v0[k] * m->J1 + dv * m->J2;
@@ -443,7 +487,7 @@ DC_INLINE double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
   const double g00 = xb - xa, w = g00 - g01;
   const double iS = 1.0 / S, kap0 = (xm - xa) * (xm + xa) * iS, lam1 = kap0, kap1 = (xb - xm) * (xb + xm) * iS;
   double cross = 0.0, self = 0.0;
-  for (int k = 0; k < dim; k++) {
+  UNROLL3 for (int k = 0; k < dim; k++) {
     const double m0 = pm[i].I0[k] + pm[i + 1].I0[k];
     const double m1 = kap0 * pm[i].Ip[k] + lam1 * pm[i + 1].I0[k] + kap1 * pm[i + 1].Ip[k];
     const double vb = pc[i + 1].v1[k];
@@ -454,123 +498,53 @@ DC_INLINE double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
   return pm[i].e2 + pm[i + 1].e2 - 2.0 * cross + self;
 }
 
+/* The piece of merge_fit(i) from the moments (the same arithmetic). */
+DC_INLINE void merged_piece(int dim, const piece *pc, const pmom *pm, int i, piece *f)
+{
+  const double xa = pc[i].x0, xb = pc[i + 1].x1;
+  double g01, g11;
+  moments(xa, xb, &g01, &g11);
+  const double w = (xb - xa) - g01;
+  f->x0 = xa;
+  f->x1 = xb;
+  f->slip = 0;
+  UNROLL3 for (int k = 0; k < dim; k++) {
+    const double vb = pc[i + 1].v1[k], m0 = (0.0 + pm[i].I0[k]) + pm[i + 1].I0[k];
+    f->v0[k] = w > 0.0 ? (m0 - vb * g01) / w : vb;
+    f->v1[k] = vb;
+  }
+}
+
 /* Over DC_CMD_MAX_SEG pieces: merges the cheapest neighbours (least change,
    merge_fit) down to DC_CMD_MAX_SEG - 1, which leaves room for the next
-   step's new piece (a growing patch makes one per step). */
+   step's new piece (a growing patch makes one per step). A merge changes
+   the costs of the merged piece's two pairs only. */
 DC_INLINE int cap(int dim, piece *pc, int np)
 {
   if (np <= DC_CMD_MAX_SEG) return np;
   pmom pm[MAXP];
+  double cost[MAXP];
   for (int i = 0; i < np; i++) piece_moments(dim, &pc[i], &pm[i]);
+  for (int i = 0; i + 1 < np; i++) cost[i] = merge_cost(dim, pc, pm, i);
   while (np > DC_CMD_MAX_SEG - 1) {
     int best = 0;
-    double bc = HUGE_VAL;
-    for (int i = 0; i + 1 < np; i++) {
-      const double c = merge_cost(dim, pc, pm, i);
-      if (c < bc || i == 0) { bc = c; best = i; }
-    }
+    double bc = cost[0];
+    for (int i = 1; i + 1 < np; i++)
+      if (cost[i] < bc) { bc = cost[i]; best = i; }
     piece f;
-    merge_fit(dim, pc, best, &f, NULL);
+    merged_piece(dim, pc, pm, best, &f);
     pc[best] = f;
     piece_moments(dim, &pc[best], &pm[best]);
     for (int i = best + 1; i + 1 < np; i++) {
       pc[i] = pc[i + 1];
       pm[i] = pm[i + 1];
+      cost[i] = cost[i + 1];
     }
     np--;
+    if (best > 0) cost[best - 1] = merge_cost(dim, pc, pm, best - 1);
+    if (best + 1 < np) cost[best] = merge_cost(dim, pc, pm, best);
   }
   return np;
-}
-
-/* One step of a profile with dim components: the stored pieces (xi, u0,
-   u1: 1 + 2 dim doubles each) rescaled by r = a_prev / a, the increment d for the
-   stuck springs, entering rim, clamp, group, tidy, cap. Returns the number
-   of pieces in out; *stick and I = int_0^1 u dxi. */
-DC_INLINE int profile_step(int dim, int n, const double *seg, double r, const double *d, double L0, piece *out,
-                           double *stick, double *I)
-{
-  piece trial[MAXP];
-  int np = 0, entered = 0;
-  if (n == 0) {
-    clamp_piece(dim, 0.0, 1.0, d, d, L0, trial, &np);
-  } else {
-    double x0 = 0.0;
-    for (int j = 0; j < n; j++) {
-      const double xs = x0;
-      const double *sj = seg + (1 + 2 * dim) * j;
-      double xe = sj[0] * r;
-      x0 = xe;
-      if (xs >= 1.0) break;
-      double p0[3], p1[3];
-      const double *a0 = sj + 1, *a1 = sj + 1 + dim;
-      if (xe > 1.0) {
-        const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
-        for (int k = 0; k < dim; k++) p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
-        xe = 1.0;
-        x0 = 1.0;
-      } else {
-        for (int k = 0; k < dim; k++) p1[k] = a1[k] + d[k];
-      }
-      for (int k = 0; k < dim; k++) p0[k] = a0[k] + d[k];
-      if (xe > xs) clamp_piece(dim, xs, xe, p0, p1, L0, trial, &np);
-    }
-    if (x0 < 1.0) {
-      /* the rim entered during the step (linearly in xi^2): loaded by the
-         part of d after its entry */
-      const double z[3] = {0.0, 0.0, 0.0};
-      clamp_piece(dim, x0, 1.0, d, z, L0, trial, &np);
-      entered = 1;
-    }
-  }
-  int no;
-  *stick = group(dim, trial, np, L0, out, &no);
-  no = tidy(dim, out, no, L0);
-  if (entered && no >= 2 && !out[no - 1].slip && !out[no - 2].slip) {
-    /* a stuck rim grown in this step joins its neighbour when the profile
-       barely changes (mean square change <= (1e-9 L0)^2, the force kept):
-       steady growth makes one piece per step otherwise */
-    piece f;
-    const double c = merge_fit(dim, out, no - 2, &f, NULL);
-    if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
-      out[no - 2] = f;
-      no--;
-    }
-  }
-  no = cap(dim, out, no);
-  for (int k = 0; k < dim; k++) I[k] = 0.0;
-  for (int j = 0; j < no; j++) {
-    const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
-    for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
-  }
-  return no;
-}
-
-static int profile_step3(int n, const dc_cmd_piece *seg, double r, const double *d, double L0, piece *out,
-                         double *stick, double *I)
-{
-  return profile_step(3, n, &seg[0].xi, r, d, L0, out, stick, I);
-}
-
-static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const double *d, double L0, piece *out,
-                         double *stick, double *I)
-{
-  return profile_step(1, n, &seg[0].xi, r, d, L0, out, stick, I);
-}
-
-/* ------------------------------------------------------------------ */
-
-
-/* Turns v (normal to a) with the rotation taking the unit a to the unit b
-   (Rodrigues without a square root: v' = c v + w x v + (w.v)/(1+c) w,
-   c = a.b, w = a x b), then removes what is left along b. */
-DC_INLINE void turn(const double *w, double c, double ic, const double *b, const double *v, double *out)
-{
-  const double wv = dc_dot3(w, v) * ic;
-  double r[3] = {c * v[0] + w[1] * v[2] - w[2] * v[1] + wv * w[0],
-                 c * v[1] + w[2] * v[0] - w[0] * v[2] + wv * w[1],
-                 c * v[2] + w[0] * v[1] - w[1] * v[0] + wv * w[2]};
-  const double rn = dc_dot3(r, b);
-  for (int k = 0; k < 3; k++) out[k] = r[k] - rn * b[k];
 }
 
 /* Projects v onto the plane normal to b, keeping |v| (a turn by nearly pi). */
@@ -580,7 +554,139 @@ static inline void project_keep(const double *b, double *v)
   const double l = norm_dir(3, v, e), en = dc_dot3(e, b);
   double r[3] = {e[0] - en * b[0], e[1] - en * b[1], e[2] - en * b[2]};
   const double lr = norm_dir(3, r, r);
-  for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
+  UNROLL3 for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
+}
+
+/* The turn of the stored force profile with the contact plane (the
+   three-dimensional rule): the rotation R taking the unit a to the unit b
+   (Rodrigues without a square root: R v = c v + w x v + (w.v)/(1+c) w,
+   c = a.b, w = a x b) followed by the removal of what is left along b,
+   as one matrix for the whole profile: (I - b b^T) R = R - b a^T (as
+   R^T b = a); for a turn by nearly pi, the projection keeping |v|. */
+typedef struct {
+  double M[3][3];
+  const double *nh;   /* b, the new unit normal */
+  int keep;           /* 1: project_keep */
+} cmd_turn;
+
+DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
+{
+  if (tr->keep) {
+    UNROLL3 for (int k = 0; k < 3; k++) out[k] = v[k];
+    project_keep(tr->nh, out);
+  } else {
+    const double v0 = v[0], v1 = v[1], v2 = v[2];
+    out[0] = tr->M[0][0] * v0 + tr->M[0][1] * v1 + tr->M[0][2] * v2;
+    out[1] = tr->M[1][0] * v0 + tr->M[1][1] * v1 + tr->M[1][2] * v2;
+    out[2] = tr->M[2][0] * v0 + tr->M[2][1] * v1 + tr->M[2][2] * v2;
+  }
+}
+
+/* out = turned v + d, rounded as turn_apply then the sum */
+DC_INLINE void turn_add(const cmd_turn *tr, const double *v, const double *d, double *out)
+{
+  if (tr->keep) {
+    turn_apply(tr, v, out);
+    UNROLL3 for (int k = 0; k < 3; k++) out[k] += d[k];
+  } else {
+    const double v0 = v[0], v1 = v[1], v2 = v[2];
+    out[0] = tr->M[0][0] * v0 + tr->M[0][1] * v1 + tr->M[0][2] * v2 + d[0];
+    out[1] = tr->M[1][0] * v0 + tr->M[1][1] * v1 + tr->M[1][2] * v2 + d[1];
+    out[2] = tr->M[2][0] * v0 + tr->M[2][1] * v1 + tr->M[2][2] * v2 + d[2];
+  }
+}
+
+/* One step of a profile with dim components: the stored pieces (xi, u0,
+   u1: 1 + 2 dim doubles each) turned by tr (dim 3; NULL: not turned) and
+   rescaled by r = a_prev / a, the increment d for the stuck springs,
+   entering rim, clamp, group, tidy, cap. Returns the number of pieces in
+   out; *stick and I = int_0^1 u dxi. */
+DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr, double r, const double *d,
+                           double L0, piece *out, double *stick, double *I)
+{
+  int np = 0, entered = 0;
+  const double nd = sq(dim, d);
+  if (n == 0) {
+    clamp_piece(dim, 0.0, 1.0, limit_at(L0, 0.0), limit_at(L0, 1.0), d, d, nd, nd, out, &np);
+  } else {
+    double x0 = 0.0, l0 = limit_at(L0, 0.0);   /* a piece's inner end and its limit */
+    for (int j = 0; j < n; j++) {
+      const double xs = x0;
+      const double *sj = seg + (1 + 2 * dim) * j;
+      double xe = sj[0] * r;
+      x0 = xe;
+      if (xs >= 1.0) break;
+      double p0[3], p1[3];
+      const double *a0 = sj + 1, *a1 = sj + 1 + dim;
+      if (xe > 1.0) {
+        double t0[3], t1[3];
+        if (tr) {
+          turn_apply(tr, a0, t0);
+          turn_apply(tr, a1, t1);
+          a0 = t0;
+          a1 = t1;
+        }
+        const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
+        UNROLL3 for (int k = 0; k < dim; k++) {
+          p0[k] = a0[k] + d[k];
+          p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
+        }
+        xe = 1.0;
+        x0 = 1.0;
+      } else if (tr) {
+        turn_add(tr, a0, d, p0);
+        turn_add(tr, a1, d, p1);
+      } else {
+        UNROLL3 for (int k = 0; k < dim; k++) {
+          p0[k] = a0[k] + d[k];
+          p1[k] = a1[k] + d[k];
+        }
+      }
+      const double l1 = limit_at(L0, xe);
+      if (xe > xs) clamp_piece(dim, xs, xe, l0, l1, p0, p1, sq(dim, p0), sq(dim, p1), out, &np);
+      l0 = l1;
+    }
+    if (x0 < 1.0) {
+      /* the rim entered during the step (linearly in xi^2): loaded by the
+         part of d after its entry */
+      const double z[3] = {0.0, 0.0, 0.0};
+      clamp_piece(dim, x0, 1.0, l0, limit_at(L0, 1.0), d, z, nd, 0.0, out, &np);
+      entered = 1;
+    }
+  }
+  int no;
+  *stick = group(dim, out, np, L0, &no);
+  no = tidy(dim, out, no, L0);
+  if (entered && no >= 2 && !out[no - 1].slip && !out[no - 2].slip) {
+    /* a stuck rim grown in this step joins its neighbour when the profile
+       barely changes (mean square change <= (1e-9 L0)^2, the force kept):
+       steady growth makes one piece per step otherwise */
+    piece f;
+    const double c = merge_fit(dim, out, no - 2, &f);
+    if (c <= 1e-18 * L0 * L0 * (out[no - 1].x1 - out[no - 2].x0)) {
+      out[no - 2] = f;
+      no--;
+    }
+  }
+  no = cap(dim, out, no);
+  UNROLL3 for (int k = 0; k < dim; k++) I[k] = 0.0;
+  for (int j = 0; j < no; j++) {
+    const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
+    UNROLL3 for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
+  }
+  return no;
+}
+
+static int profile_step3(int n, const dc_cmd_piece *seg, const cmd_turn *tr, double r, const double *d, double L0,
+                         piece *out, double *stick, double *I)
+{
+  return profile_step(3, n, &seg[0].xi, tr, r, d, L0, out, stick, I);
+}
+
+static int profile_step1(int n, const dc_cmd_twist_piece *seg, double r, const double *d, double L0, piece *out,
+                         double *stick, double *I)
+{
+  return profile_step(1, n, &seg[0].xi, NULL, r, d, L0, out, stick, I);
 }
 
 /* ------------------------------------------------------------------ */
@@ -665,7 +771,7 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
 {
   const double a = patch->a, b = patch->b;
   const double nn = dc_dot3(n, n), in = 1.0 / sqrt(nn);
-  for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
+  UNROLL3 for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
   const double *nh = f->nh;
   f->tnu = m->s1 / m->s0;
   f->cm = (2.0 - f->tnu) * (M_PI / 4.0);
@@ -679,68 +785,69 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
     axis_compliances(f->tnu, &f->el, &f->cm, &cn);
     f->rho = f->cm / cn;   /* k_minor / k_major */
     const double an = dc_dot3(patch->axis, nh);
-    for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
+    UNROLL3 for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
     const double al = norm_dir(3, f->ax, f->ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
   }
   f->k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, f->cm);
   const double dn = dc_dot3(du, nh);
-  for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
+  UNROLL3 for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
   if (f->ell) {
     const double da = (1.0 - f->rho) * dc_dot3(f->ax, f->dut);
-    for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
+    UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
   } else {
-    for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
+    UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
   }
   return DC_OK;
 }
 
-/* The stored force profile turned with the contact plane (the
-   three-dimensional rule): h's pieces where the normal has not moved, else
-   copies in S. */
-DC_INLINE const dc_cmd_piece *cmd_turned_profile(const dc_cmd_state *h, const double *nh, int nsu, dc_cmd_piece *S)
+/* How the stored force profile turns with the contact plane: NULL where
+   the normal has not moved, else tr filled. */
+DC_INLINE const cmd_turn *cmd_turn_of(const dc_cmd_state *h, const double *nh, int nsu, cmd_turn *tr)
 {
-  const double *np0 = h->n_prev;
-  if (nsu == 0 || (np0[0] == nh[0] && np0[1] == nh[1] && np0[2] == nh[2])) return h->seg;
-  const double c = dc_dot3(np0, nh);
-  if (c > -0.999) {   /* turned straight from h into the copies */
-    const double w[3] = {np0[1] * nh[2] - np0[2] * nh[1], np0[2] * nh[0] - np0[0] * nh[2],
-                         np0[0] * nh[1] - np0[1] * nh[0]};
+  const double *a = h->n_prev, *b = nh;
+  if (nsu == 0 || (a[0] == b[0] && a[1] == b[1] && a[2] == b[2])) return NULL;
+  const double c = dc_dot3(a, b);
+  tr->nh = nh;
+  tr->keep = !(c > -0.999);
+  if (!tr->keep) {
+    const double a0 = a[0], a1 = a[1], a2 = a[2], b0 = b[0], b1 = b[1], b2 = b[2];
+    const double w0 = a1 * b2 - a2 * b1, w1 = a2 * b0 - a0 * b2, w2 = a0 * b1 - a1 * b0;
     const double ic = 1.0 / (1.0 + c);
-    for (int j = 0; j < nsu; j++) {
-      S[j].xi = h->seg[j].xi;
-      turn(w, c, ic, nh, h->seg[j].u0, S[j].u0);
-      turn(w, c, ic, nh, h->seg[j].u1, S[j].u1);
-    }
-  } else {
-    memcpy(S, h->seg, sizeof(dc_cmd_piece) * nsu);
-    for (int j = 0; j < nsu; j++) {
-      project_keep(nh, S[j].u0);
-      project_keep(nh, S[j].u1);
-    }
+    /* c I + ic w w^T - b a^T, then + [w]x */
+    tr->M[0][0] = c + ic * w0 * w0 - b0 * a0;
+    tr->M[0][1] = (0.0 + ic * w0 * w1 - b0 * a1) - w2;
+    tr->M[0][2] = (0.0 + ic * w0 * w2 - b0 * a2) + w1;
+    tr->M[1][0] = (0.0 + ic * w1 * w0 - b1 * a0) + w2;
+    tr->M[1][1] = c + ic * w1 * w1 - b1 * a1;
+    tr->M[1][2] = (0.0 + ic * w1 * w2 - b1 * a2) - w0;
+    tr->M[2][0] = (0.0 + ic * w2 * w0 - b2 * a0) - w1;
+    tr->M[2][1] = (0.0 + ic * w2 * w1 - b2 * a1) + w0;
+    tr->M[2][2] = c + ic * w2 * w2 - b2 * a2;
   }
-  return S;
+  return tr;
 }
 
 /* The force (Eqs. 59-71: the springs' profile stepped, F = k_major int u
    dxi in the plane), its tangent stiffness along du (Eqs. 68, 70: theta k;
    on an ellipse it depends on the direction), the dissipative force
    (Eq. 85) and the clip onto mu F_bound. Returns the profile's piece
-   count (pieces in pf). */
+   count (pieces in pf); *I_nf: 0 if its integral is finite, else NaN. */
 DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
-                        const dc_cmd_piece *seg, int nsu, double r, double dt, piece *pf, double *F, double *kt_out,
-                        double *stick_out)
+                        const dc_cmd_piece *seg, const cmd_turn *tr, int nsu, double r, double dt, piece *pf,
+                        double *F, double *kt_out, double *stick_out, double *I_nf)
 {
   const double mu = p->mu, Fb = patch->F_bound;
   const double *nh = f->nh;
   /* Coulomb limits L0 (1 - xi^2) integrate to mu F_bound: L0 = 3 mu F_b / (2 k_major) */
   const double L0 = pq(0.75 / M_PI * f->cm, mu, Fb, m->s0, patch->a, 1.0);
   double stick, I[3];
-  const int nfp = profile_step3(nsu, seg, r, f->d, L0, pf, &stick, I);
-  for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
+  const int nfp = profile_step3(nsu, seg, tr, r, f->d, L0, pf, &stick, I);
+  *I_nf = (dc_nf(I[0]) + dc_nf(I[1])) + dc_nf(I[2]);
+  UNROLL3 for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
   {
     const double fn = dc_dot3(F, nh);
-    for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+    UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
   }
   double kt = stick * f->k_major;
   if (f->ell) {
@@ -755,22 +862,22 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
     /* Eq. 85: A_t (theta K0) d(delta)/dt */
     const double fd = p->t_visc / dt * stick * f->k_major;
     double G[3];
-    for (int k = 0; k < 3; k++) G[k] = F[k] + fd * f->d[k];
+    UNROLL3 for (int k = 0; k < 3; k++) G[k] = F[k] + fd * f->d[k];
     if (isfinite(G[0]) && isfinite(G[1]) && isfinite(G[2])) {
-      for (int k = 0; k < 3; k++) F[k] = G[k];
+      UNROLL3 for (int k = 0; k < 3; k++) F[k] = G[k];
     } else if (norm_dir(3, f->d, G) > 0.0) {   /* the viscous part dominates: at the limit along d */
-      for (int k = 0; k < 3; k++) F[k] = lim * G[k];
+      UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * G[k];
     }
   }
   {
     double e[3];
     const double fn = dc_dot3(F, nh);   /* the viscous part may leave the plane by rounding */
-    for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+    UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
     /* clipped onto the limit (rounding, dissipation); the squares decide
        only where they are normal doubles clearly inside it */
     const double f2 = dc_dot3(F, F), l2 = lim * lim;
     if (!(f2 >= DBL_MIN && l2 <= DBL_MAX && f2 < (1.0 - 1e-14) * l2) && norm_dir(3, F, e) > lim)
-      for (int k = 0; k < 3; k++) F[k] = lim * e[k];
+      UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
   *kt_out = kt;
   *stick_out = stick;
@@ -779,9 +886,10 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
 
 /* Twisting (Eq. 77, generalised to two bodies; full slip 3/8 mu F a E):
    the twist profile stepped by dphi; returns its piece count (pt), the
-   moment and its tangent stiffness. */
+   moment and its tangent stiffness; adds dc_nf of its integral to *I_nf. */
 DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const dc_patch *patch, const cmd_frame *f,
-                        const dc_cmd_state *h, int ntu, double r, double dphi, piece *pt, double *Mt_out, double *kr_out)
+                        const dc_cmd_state *h, int ntu, double r, double dphi, piece *pt, double *Mt_out, double *kr_out,
+                        double *I_nf)
 {
   const double a = patch->a, b = patch->b, mu = p->mu, Fb = patch->F_bound;
   double tf = 8.0 / M_PI, E = M_PI / 2.0;   /* circle */
@@ -794,6 +902,7 @@ DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   const double Lt = pq(0.5625 * E * 3.0 / (2.0 * M_PI * tf), mu, Fb, m->s0, a, a);   /* 3 Ms / (2 ktw) */
   double st, It;
   const int ntw = profile_step1(ntu, h->seg_t, r, &dphi, Lt, pt, &st, &It);
+  *I_nf += dc_nf(It);
   double Mt = ktw * It;
   if (fabs(Mt) > Ms) Mt = copysign(Ms, Mt);
   *Mt_out = Mt;
@@ -801,22 +910,22 @@ DC_INLINE int cmd_twist(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   return ntw;
 }
 
-/* Whether every result is finite (the values to be stored among them). */
-DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, double Mt, double kr, const piece *pf,
-                                 int nfp, const piece *pt, int ntw)
+/* Whether every result is finite (the values to be stored among them).
+   The stored values are when the profiles' integrals are (I_nf == 0):
+   each value enters its integral as h ((1 - w) v0 + w v1), h >= 0,
+   w in [1/3, 1/2], so a non-finite one makes its term and the sum
+   non-finite; the breakpoints lie in [0, 1]. Only an integral that
+   overflowed needs the values checked one by one. */
+DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, double Mt, double kr, double I_nf,
+                                 const piece *pf, int nfp, const piece *pt, int ntw)
 {
   double fin = ((dc_nf(F[0]) + dc_nf(F[1])) + (dc_nf(F[2]) + dc_nf(kt))) + ((dc_nf(stick) + dc_nf(Mt)) + dc_nf(kr));
-  {
-    double f0 = 0.0, f1 = 0.0, f2 = 0.0, f3 = 0.0;
-    for (int j = 0; j < nfp; j++) {
-      f0 += dc_nf(pf[j].x1) + dc_nf(pf[j].v0[0]);
-      f1 += dc_nf(pf[j].v0[1]) + dc_nf(pf[j].v0[2]);
-      f2 += dc_nf(pf[j].v1[0]) + dc_nf(pf[j].v1[1]);
-      f3 += dc_nf(pf[j].v1[2]);
-    }
-    fin += (f0 + f1) + (f2 + f3);
-  }
-  for (int j = 0; j < ntw; j++) fin += dc_nf(pt[j].x1) + (dc_nf(pt[j].v0[0]) + dc_nf(pt[j].v1[0]));
+  if (fin != 0.0) return 0;
+  if (I_nf == 0.0) return 1;
+  for (int j = 0; j < nfp; j++)
+    fin += (dc_nf(pf[j].v0[0]) + dc_nf(pf[j].v0[1])) + (dc_nf(pf[j].v0[2]) + dc_nf(pf[j].v1[0])) +
+           (dc_nf(pf[j].v1[1]) + dc_nf(pf[j].v1[2]));
+  for (int j = 0; j < ntw; j++) fin += dc_nf(pt[j].v0[0]) + dc_nf(pt[j].v1[0]);
   return fin == 0.0;
 }
 
@@ -825,17 +934,10 @@ DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, doubl
 DC_INLINE void cmd_commit(const dc_cmd_params *p, const double *nh, double a, const piece *pf, int nfp, int ns,
                           const piece *pt, int ntw, int nt, dc_cmd_state *h)
 {
-  for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
+  UNROLL3 for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
   h->a_prev = a;
   h->nseg = nfp;
-  for (int j = 0; j < nfp; j++) {
-    dc_cmd_piece *q = &h->seg[j];
-    q->xi = pf[j].x1;
-    for (int k = 0; k < 3; k++) {
-      q->u0[k] = pf[j].v0[k];
-      q->u1[k] = pf[j].v1[k];
-    }
-  }
+  for (int j = 0; j < nfp; j++) memcpy(&h->seg[j], (const char *)&pf[j] + offsetof(piece, x1), sizeof(dc_cmd_piece));
   if (nfp < ns) memset(&h->seg[nfp], 0, sizeof(dc_cmd_piece) * (ns - nfp));
   if (p->twisting) {
     h->nseg_t = ntw;
@@ -871,16 +973,16 @@ DC_INLINE int cmd_step(int checked, const dc_cmd_params *p, const dc_mindlin_pai
   const int fresh = !(h->a_prev > 0.0);
   const double r = fresh ? 1.0 : h->a_prev / a;   /* the pieces' radii scale by a_prev / a */
   const int nsu = fresh ? 0 : ns;
-  dc_cmd_piece S[DC_CMD_MAX_SEG];
-  const dc_cmd_piece *seg = cmd_turned_profile(h, f.nh, nsu, S);
+  cmd_turn turn_buf;
+  const cmd_turn *tr = cmd_turn_of(h, f.nh, nsu, &turn_buf);
 
   piece pf[MAXP], pt[MAXP];
-  double F[3], kt, stick, Mt = 0.0, kr = 0.0;
-  const int nfp = cmd_force(p, m, patch, &f, seg, nsu, r, dt, pf, F, &kt, &stick);
-  const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr) : 0;
-  if (!cmd_results_finite(F, kt, stick, Mt, kr, pf, nfp, pt, ntw)) return DC_ERANGE;
+  double F[3], kt, stick, Mt = 0.0, kr = 0.0, I_nf;
+  const int nfp = cmd_force(p, m, patch, &f, h->seg, tr, nsu, r, dt, pf, F, &kt, &stick, &I_nf);
+  const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr, &I_nf) : 0;
+  if (!cmd_results_finite(F, kt, stick, Mt, kr, I_nf, pf, nfp, pt, ntw)) return DC_ERANGE;
 
-  for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
+  UNROLL3 for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
   out->kt = kt;
   out->stick = stick;
   out->Mt = Mt;
