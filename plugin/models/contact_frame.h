@@ -165,11 +165,11 @@ __attribute__((always_inline)) inline void applyNormalForce(const SurfacesInters
    torques (spheres: lever arms cri, crj along -en and +en; non-spherical
    particles: from the contact point); walls scale by area_ratio. Inline:
    it runs once per contact and sub-model that acts. */
-__attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
-                                 double **x, ForceData &i_forces, ForceData &j_forces)
+__attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F,
+                                                                double cri, double crj, double **x,
+                                                                ForceData &i_forces, ForceData &j_forces)
 {
   const double *n = sidata.en;
-  const double t[3] = {n[1] * F[2] - n[2] * F[1], n[2] * F[0] - n[0] * F[2], n[0] * F[1] - n[1] * F[0]};
   double ti[3], tj[3];
 #ifdef NONSPHERICAL_ACTIVE_FLAG
   if (sidata.is_non_spherical) {
@@ -186,20 +186,38 @@ __attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIn
   (void)x;
 #endif
   {
-    for (int c = 0; c < 3; c++) {
-      ti[c] = -cri * t[c];
-      tj[c] = -crj * t[c];
-    }
+    const double t0 = n[1] * F[2] - n[2] * F[1], t1 = n[2] * F[0] - n[0] * F[2], t2 = n[0] * F[1] - n[1] * F[0];
+    ti[0] = -cri * t0;
+    ti[1] = -cri * t1;
+    ti[2] = -cri * t2;
+    tj[0] = -crj * t0;
+    tj[1] = -crj * t1;
+    tj[2] = -crj * t2;
   }
-  const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
-  for (int c = 0; c < 3; c++) {
-    i_forces.delta_F[c] += scale * F[c];
-    i_forces.delta_torque[c] += scale * ti[c];
-    if (!sidata.is_wall) {
-      j_forces.delta_F[c] -= F[c];
-      j_forces.delta_torque[c] += tj[c];
-    }
+  double *fi = i_forces.delta_F, *mi = i_forces.delta_torque;
+  if (sidata.is_wall) {
+    const double s = sidata.area_ratio;
+    fi[0] += s * F[0];
+    fi[1] += s * F[1];
+    fi[2] += s * F[2];
+    mi[0] += s * ti[0];
+    mi[1] += s * ti[1];
+    mi[2] += s * ti[2];
+    return;
   }
+  double *fj = j_forces.delta_F, *mj = j_forces.delta_torque;
+  fi[0] += F[0];
+  fi[1] += F[1];
+  fi[2] += F[2];
+  mi[0] += ti[0];
+  mi[1] += ti[1];
+  mi[2] += ti[2];
+  fj[0] -= F[0];
+  fj[1] -= F[1];
+  fj[2] -= F[2];
+  mj[0] += tj[0];
+  mj[1] += tj[1];
+  mj[2] += tj[2];
 }
 
 }
