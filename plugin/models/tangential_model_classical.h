@@ -58,7 +58,7 @@ class TangentialModel<TANGENTIAL_CLASSICAL> : public TangentialModelBase
 public:
   TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     TangentialModelBase(lmp, hsetup, c), law(DC_CT_SPRING_SLIDING), stiffness(DC_CT_KT_MINDLIN),
-    damping(DC_CT_DAMP_NONE), history_offset(-1), ntypes(0)
+    damping(DC_CT_DAMP_NONE), history_offset(-1), ntypes(0), intersect_(&intersect<DC_CT_SPRING_SLIDING>)
   {
     patch.request(c);
     handover.attach(c);
@@ -87,6 +87,18 @@ public:
   {
     patch.setup(lmp, c);
     handover.setup(lmp, hsetup);
+    switch (law) {
+    case DC_CT_COULOMB: intersect_ = &intersect<DC_CT_COULOMB>; break;
+    case DC_CT_VISCOUS: intersect_ = &intersect<DC_CT_VISCOUS>; break;
+    case DC_CT_VISCOUS_SLIDING: intersect_ = &intersect<DC_CT_VISCOUS_SLIDING>; break;
+    case DC_CT_SPRING_SLIDING: intersect_ = &intersect<DC_CT_SPRING_SLIDING>; break;
+    case DC_CT_SPRING_DASHPOT_SLIDING: intersect_ = &intersect<DC_CT_SPRING_DASHPOT_SLIDING>; break;
+    case DC_CT_DI_RENZO: intersect_ = &intersect<DC_CT_DI_RENZO>; break;
+    case DC_CT_LANGSTON: intersect_ = &intersect<DC_CT_LANGSTON>; break;
+    case DC_CT_ZHENG: intersect_ = &intersect<DC_CT_ZHENG>; break;
+    case DC_CT_TSUJI: intersect_ = &intersect<DC_CT_TSUJI>; break;
+    default: intersect_ = &intersect<DC_CT_INCREMENTAL>; break;
+    }
     for (int k = 0; k < nfields(); k++) {
       const int off = hsetup->add_history_value(dc_classical_tangential_history[k].name,
                                                 dc_classical_tangential_history[k].flips ? "1" : "0");
@@ -138,26 +150,26 @@ public:
       }
   }
 
-  /* One dispatch on the law setting per contact (the same branch for the
-     whole run); each law's step is compiled with its law a constant. */
-  inline void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  /* The law's own evaluation, chosen once from the setting: one indirect
+     call per contact. */
+  __attribute__((always_inline)) inline void surfacesIntersect(const SurfacesIntersectData &sidata,
+                                                               ForceData &i_forces, ForceData &j_forces)
   {
-    switch (law) {
-    case DC_CT_COULOMB: return intersect<DC_CT_COULOMB>(sidata, i_forces, j_forces);
-    case DC_CT_VISCOUS: return intersect<DC_CT_VISCOUS>(sidata, i_forces, j_forces);
-    case DC_CT_VISCOUS_SLIDING: return intersect<DC_CT_VISCOUS_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_SPRING_SLIDING: return intersect<DC_CT_SPRING_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_SPRING_DASHPOT_SLIDING: return intersect<DC_CT_SPRING_DASHPOT_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_DI_RENZO: return intersect<DC_CT_DI_RENZO>(sidata, i_forces, j_forces);
-    case DC_CT_LANGSTON: return intersect<DC_CT_LANGSTON>(sidata, i_forces, j_forces);
-    case DC_CT_ZHENG: return intersect<DC_CT_ZHENG>(sidata, i_forces, j_forces);
-    case DC_CT_TSUJI: return intersect<DC_CT_TSUJI>(sidata, i_forces, j_forces);
-    default: return intersect<DC_CT_INCREMENTAL>(sidata, i_forces, j_forces);
-    }
+    intersect_(this, sidata, i_forces, j_forces);
   }
 
+  /* One law's evaluation, its law a constant in the step (compiled as
+     scalar code: GCC's basic-block vectorizer adds shuffles here). */
   template<int LAW>
-  void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  __attribute__((optimize("no-tree-slp-vectorize"))) static void intersect(TangentialModel *self,
+                                                                           const SurfacesIntersectData &sidata,
+                                                                           ForceData &i_forces, ForceData &j_forces)
+  {
+    self->intersectLaw<LAW>(sidata, i_forces, j_forces);
+  }
+  template<int LAW>
+  __attribute__((always_inline)) inline void intersectLaw(const SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                          ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     dc_patch stock;
@@ -184,8 +196,7 @@ public:
     const dc_classical_tangential *m = &models[sidata.itype * (ntypes + 1) + sidata.jtype];
     if (dc_classical_tangential_step_law(LAW, 0, m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out) != DC_OK)
       fail(sidata, *m, p, *h);
-    const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
-    applyTangentialForce(sidata, F, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);
+    applyTangentialForceAs<true>(sidata, out.Ft, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);   /* Ft on j */
   }
 
   /* Apart: the spring is released (as stock tangential history). */
@@ -245,6 +256,7 @@ private:
 
   int law, stiffness, damping;
   int history_offset, ntypes;
+  void (*intersect_)(TangentialModel *, const SurfacesIntersectData &, ForceData &, ForceData &);   /* the law's */
   std::vector<dc_classical_tangential> models;
   ContactPatchReader patch;
   RollingHandover handover;

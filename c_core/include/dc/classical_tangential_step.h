@@ -5,11 +5,12 @@
    alone, its values in registers; the same code and the same bits as the
    function (which calls it with checked = 1).
    checked = 0 skips the check of the inputs' domain (a third of the
-   step's instructions): for a caller whose inputs lie in it by
-   construction (finite, |n| = 1, a, F_bound, meff, kn, gamman in range,
-   dt > 0). The results are checked all the same: a non-finite one gives
-   DC_ERANGE with h and out untouched, and the caller then calls the
-   checked step for the status of its inputs. */
+   step's instructions) and of the increment vt dt: for a caller whose
+   inputs lie in the domain by construction (finite, |n| = 1, a, F_bound,
+   meff, kn, gamman in range, dt > 0). The results are checked all the
+   same (an increment that overflowed shows in the spring): a non-finite
+   one gives DC_ERANGE with h and out untouched, and the caller then calls
+   the checked step for the status of its inputs. */
 #ifndef DC_CLASSICAL_TANGENTIAL_STEP_H
 #define DC_CLASSICAL_TANGENTIAL_STEP_H
 
@@ -333,7 +334,7 @@ DC_INLINE int dc_classical_tangential_step_law(int law, int checked, const dc_cl
     d[0] = vt[0] * dt;
     d[1] = vt[1] * dt;
     d[2] = vt[2] * dt;
-    if (!dc_finite3(d)) return DC_ERANGE;
+    if (checked && !dc_finite3(d)) return DC_ERANGE;
   }
 
   dc_classical_tangential_out o;
@@ -455,14 +456,14 @@ DC_INLINE int dc_classical_tangential_step_law(int law, int checked, const dc_cl
     break;
   }
   }
-  /* the results finite: force and spring; kt and gammat where they are
-     not a checked K and eta or constant; rev for INCREMENTAL (0 otherwise) */
-  double chk = (dc_nf(o.Ft[0]) + dc_nf(o.Ft[1])) + (dc_nf(o.Ft[2]) + dc_nf(s.spring[0])) +
-               (dc_nf(s.spring[1]) + dc_nf(s.spring[2]));
-  if (law == DC_CT_LANGSTON || law == DC_CT_ZHENG || law == DC_CT_INCREMENTAL)
-    chk += dc_nf(o.kt) + dc_nf(o.gammat);
-  if (law == DC_CT_INCREMENTAL) chk += (dc_nf(s.rev[0]) + dc_nf(s.rev[1])) + dc_nf(s.rev[2]);
-  if (chk != 0.0) return DC_ERANGE;
+  /* the results finite, by their sum (finite unless one is not, or they
+     come within a factor 11 of DBL_MAX): force and spring; kt and gammat
+     where they are not a checked K and eta or a constant; rev for
+     INCREMENTAL (0 otherwise) */
+  double sum = ((o.Ft[0] + o.Ft[1]) + (o.Ft[2] + s.spring[0])) + (s.spring[1] + s.spring[2]);
+  if (law == DC_CT_LANGSTON || law == DC_CT_ZHENG || law == DC_CT_INCREMENTAL) sum += o.kt + o.gammat;
+  if (law == DC_CT_INCREMENTAL) sum += (s.rev[0] + s.rev[1]) + s.rev[2];
+  if (dc_nf(sum) != 0.0) return DC_ERANGE;
   ct_store(law, &s, h);
   *out = o;
   return DC_OK;
