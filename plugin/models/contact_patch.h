@@ -111,6 +111,9 @@ public:
   /* Whether the normal model publishes the patch. */
   bool published() const { return written_ != 0; }
 
+  /* The normal model's patch of this evaluation (when published()). */
+  const dc_patch &publishedPatch() const { return *written_; }
+
   /* Whether the normal model keeps this contact formed (false under a
      stock normal model, whose contacts end when the surfaces part). */
   bool formed() const { return written_ && written_->formed != 0.0; }
