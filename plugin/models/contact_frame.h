@@ -163,21 +163,27 @@ __attribute__((always_inline)) inline void applyNormalForce(const SurfacesInters
 
 /* Adds the tangential force F to i (-F to j) at the contact point, with its
    torques (spheres: lever arms cri, crj along -en and +en; non-spherical
-   particles: from the contact point); walls scale by area_ratio. Inline:
-   it runs once per contact and sub-model that acts. */
-__attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F, double cri, double crj,
-                                 double **x, ForceData &i_forces, ForceData &j_forces)
+   particles: from the contact point); walls scale by area_ratio. With
+   ON_J, F is the force on j (-F on i, as the c_core laws give it): the
+   same sums without negating F first (the same bits). Inline: it runs
+   once per contact and sub-model that acts. */
+template<bool ON_J>
+__attribute__((always_inline)) inline void applyTangentialForceAs(const SurfacesIntersectData &sidata, const double *F,
+                                                                  double cri, double crj, double **x,
+                                                                  ForceData &i_forces, ForceData &j_forces)
 {
   const double *n = sidata.en;
-  const double t[3] = {n[1] * F[2] - n[2] * F[1], n[2] * F[0] - n[0] * F[2], n[0] * F[1] - n[1] * F[0]};
-  double ti[3], tj[3];
+  double ti[3], tj[3];   /* torques on i and j */
 #ifdef NONSPHERICAL_ACTIVE_FLAG
   if (sidata.is_non_spherical) {
-    double xc[3];
+    double xc[3], Fi[3], Fj[3];
+    for (int c = 0; c < 3; c++) {
+      Fi[c] = ON_J ? -F[c] : F[c];
+      Fj[c] = -Fi[c];
+    }
     LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.i], xc);
-    LAMMPS_NS::vectorCross3D(xc, F, ti);
+    LAMMPS_NS::vectorCross3D(xc, Fi, ti);
     if (!sidata.is_wall) {
-      const double Fj[3] = {-F[0], -F[1], -F[2]};
       LAMMPS_NS::vectorSubtract3D(sidata.contact_point, x[sidata.j], xc);
       LAMMPS_NS::vectorCross3D(xc, Fj, tj);
     }
@@ -186,20 +192,63 @@ __attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIn
   (void)x;
 #endif
   {
-    for (int c = 0; c < 3; c++) {
-      ti[c] = -cri * t[c];
-      tj[c] = -crj * t[c];
-    }
+    /* t = en x F; on i -cri t (+cri t for F on j), on j -crj t (+crj t) */
+    const double t0 = n[1] * F[2] - n[2] * F[1], t1 = n[2] * F[0] - n[0] * F[2], t2 = n[0] * F[1] - n[1] * F[0];
+    const double ci = ON_J ? cri : -cri, cj = ON_J ? crj : -crj;
+    ti[0] = ci * t0;
+    ti[1] = ci * t1;
+    ti[2] = ci * t2;
+    tj[0] = cj * t0;
+    tj[1] = cj * t1;
+    tj[2] = cj * t2;
   }
-  const double scale = sidata.is_wall ? sidata.area_ratio : 1.0;
-  for (int c = 0; c < 3; c++) {
-    i_forces.delta_F[c] += scale * F[c];
-    i_forces.delta_torque[c] += scale * ti[c];
-    if (!sidata.is_wall) {
-      j_forces.delta_F[c] -= F[c];
-      j_forces.delta_torque[c] += tj[c];
+  double *fi = i_forces.delta_F, *mi = i_forces.delta_torque;
+  if (sidata.is_wall) {
+    const double s = sidata.area_ratio;
+    if (ON_J) {
+      fi[0] -= s * F[0];
+      fi[1] -= s * F[1];
+      fi[2] -= s * F[2];
+    } else {
+      fi[0] += s * F[0];
+      fi[1] += s * F[1];
+      fi[2] += s * F[2];
     }
+    mi[0] += s * ti[0];
+    mi[1] += s * ti[1];
+    mi[2] += s * ti[2];
+    return;
   }
+  double *fj = j_forces.delta_F, *mj = j_forces.delta_torque;
+  if (ON_J) {
+    fi[0] -= F[0];
+    fi[1] -= F[1];
+    fi[2] -= F[2];
+    fj[0] += F[0];
+    fj[1] += F[1];
+    fj[2] += F[2];
+  } else {
+    fi[0] += F[0];
+    fi[1] += F[1];
+    fi[2] += F[2];
+    fj[0] -= F[0];
+    fj[1] -= F[1];
+    fj[2] -= F[2];
+  }
+  mi[0] += ti[0];
+  mi[1] += ti[1];
+  mi[2] += ti[2];
+  mj[0] += tj[0];
+  mj[1] += tj[1];
+  mj[2] += tj[2];
+}
+
+/* The force F on i. */
+__attribute__((always_inline)) inline void applyTangentialForce(const SurfacesIntersectData &sidata, const double *F,
+                                                                double cri, double crj, double **x,
+                                                                ForceData &i_forces, ForceData &j_forces)
+{
+  applyTangentialForceAs<false>(sidata, F, cri, crj, x, i_forces, j_forces);
 }
 
 }

@@ -29,7 +29,7 @@ namespace ContactModels {
    when the deck said `contactPatch on`. */
 class ContactPatchWriter {
 public:
-  ContactPatchWriter() : offset_(-1), cmb_(0), read_(false) { memset(&current_, 0, sizeof current_); }
+  ContactPatchWriter() : offset_(-1), cmb_(0), read_(false), active_(false) { memset(&current_, 0, sizeof current_); }
   ~ContactPatchWriter()
   {
     if (read_) ContactSlots::withdraw(cmb_, "dc_patch");
@@ -41,6 +41,7 @@ public:
   {
     cmb_ = cmb;
     read_ = cmb->get_history_offset("dc_patch_reader") >= 0;
+    active_ = read_ || stored;
     if (read_) ContactSlots::offer(cmb, "dc_patch", &current_);
     if (!stored) return;
     for (int k = 0; k < DC_PATCH_NFIELDS; k++) {
@@ -56,7 +57,7 @@ public:
   }
 
   /* Whether anything reads the patch (a sub-model, or the history). */
-  bool active() const { return read_ || offset_ >= 0; }
+  bool active() const { return active_; }
 
   /* The patch of this evaluation, to be filled by the normal model and
      handed over by commit(). */
@@ -79,6 +80,7 @@ private:
   int offset_;                /* history values, with contactPatch on; else -1 */
   const ContactModelBase *cmb_;
   bool read_;                 /* a sub-model reads current_ */
+  bool active_;               /* read_ or stored */
 };
 
 /* The summits' patch of a rough contact (gw_rough: dc_rough_tangential_axes
@@ -108,6 +110,9 @@ public:
 
   /* Whether the normal model publishes the patch. */
   bool published() const { return written_ != 0; }
+
+  /* The normal model's patch of this evaluation (when published()). */
+  const dc_patch &publishedPatch() const { return *written_; }
 
   /* Whether the normal model keeps this contact formed (false under a
      stock normal model, whose contacts end when the surfaces part). */

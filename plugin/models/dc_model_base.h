@@ -337,17 +337,22 @@ protected:
   /* Elastic force P at overlap delta with damping (the damping setting) on
      the stiffness Sn (normal; none where Sn <= 0 or delta <= 0 for the laws
      that need them) and kt (tangential), clipped at 0 with limitForce;
-     stored in sidata with the secant kn and kt, applied. */
-  void applyForce(SurfacesIntersectData &sidata, double P, double delta, double vn, double Sn, double kn, double kt,
-                  ForceData &i_forces, ForceData &j_forces)
+     stored in sidata with the secant kn and kt, applied. Inline, with the
+     default damping (restitution) tested first. */
+  __attribute__((always_inline)) inline void applyForce(SurfacesIntersectData &sidata, double P, double delta,
+                                                        double vn, double Sn, double kn, double kt,
+                                                        ForceData &i_forces, ForceData &j_forces)
   {
     const double coef = dampCoef[sidata.itype * (ntypes_ + 1) + sidata.jtype];
-    const double d = delta > 0.0 ? delta : 0.0;
     double gamman, gammat = 0.0;
-    if (dampingLaw == DC_DAMPING_VISCOELASTIC) {   /* acts on a negative stiffness too */
+    if (dampingLaw == DC_DAMPING_RESTITUTION) {
+      gamman = dc_damping_restitution(coef, Sn > 0.0 ? Sn : 0.0, sidata.meff);
+      if (tangential_damping) gammat = dc_damping_restitution(coef, kt, sidata.meff);
+    } else if (dampingLaw == DC_DAMPING_VISCOELASTIC) {   /* acts on a negative stiffness too */
       gamman = dc_damping_viscoelastic(coef, Sn);
       if (tangential_damping) gammat = dc_damping_viscoelastic(coef, kt);
     } else {
+      const double d = delta > 0.0 ? delta : 0.0;
       gamman = dc_damping_gamma(dampingLaw, coef, Sn > 0.0 ? Sn : 0.0, d, sidata.meff);
       if (tangential_damping) gammat = dc_damping_gamma(dampingLaw, coef, kt, d, sidata.meff);
     }

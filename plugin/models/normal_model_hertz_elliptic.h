@@ -37,37 +37,47 @@ public:
   inline void surfacesIntersect(SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (superquadric(sidata)) return superquadricIntersect(sidata, i_forces, j_forces);
+    /* spheres: stock hertz's arithmetic, R_force = R_area = R */
     const int itype = sidata.itype, jtype = sidata.jtype;
-    const double deltan = sidata.deltan;
-
-    double r_force = sphereEffectiveRadius(sidata), r_area = r_force, axis[3];
-    double *ax = axisWanted(axis);
-    const bool sq = superquadric(sidata);
-    dc_hertz_geom g;
-    if (sq) {
-      superquadricGeometry(sidata, g, ax);
-      r_force = g.R_force;
-      r_area = g.R_area;
-      checkHertzRange(sidata, 2.0 * g.R_major * deltan * g.D / g.K, g.R_minor);   /* a^2 = 2 R_major delta D / K */
-    } else {
-      checkHertzRange(sidata, r_force * deltan, r_force);                         /* a^2 = R delta */
-    }
+    const double deltan = sidata.deltan, R = sphereEffectiveRadius(sidata);
+    checkHertzRange(sidata, R * deltan, R);   /* a^2 = R delta */
     double kn, Sn;
-    const double root = dc_hertz_stiffness(Yeff[itype][jtype], r_force, deltan, &kn, &Sn);
-    const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], r_area == r_force ? root : sqrt(r_area * deltan));
+    const double root = dc_hertz_stiffness(Yeff[itype][jtype], R, deltan, &kn, &Sn);
     const double P = kn * deltan;
-    applyForce(sidata, P, deltan, sidata.vn, Sn, kn, kt, i_forces, j_forces);
-    if (!ax) return;
-    if (!sq) return publishCircle(sidata, r_force, deltan, P, Yeff[itype][jtype]);
-    dc_contact c;
-    dc_hertz_normal(&g, Yeff[itype][jtype], deltan, &c);
-    publish(sidata, c, ax);
+    applyForce(sidata, P, deltan, sidata.vn, Sn, kn, dc_mindlin_kt_circle(Geff[itype][jtype], root), i_forces,
+               j_forces);
+    if (patchStored()) publishCircle(sidata, R, deltan, P, Yeff[itype][jtype]);
   }
 
   void surfacesClose(SurfacesCloseData &scdata, ForceData &, ForceData &)
   {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
     publishNone(scdata);
+  }
+
+private:
+  /* Superquadrics: the relative principal radii from both surfaces'
+     curvatures (out of line: the sphere path stays small). */
+  __attribute__((noinline)) void superquadricIntersect(SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                       ForceData &j_forces)
+  {
+    const int itype = sidata.itype, jtype = sidata.jtype;
+    const double deltan = sidata.deltan;
+    double axis[3];
+    double *ax = axisWanted(axis);
+    dc_hertz_geom g;
+    superquadricGeometry(sidata, g, ax);
+    checkHertzRange(sidata, 2.0 * g.R_major * deltan * g.D / g.K, g.R_minor);   /* a^2 = 2 R_major delta D / K */
+    double kn, Sn;
+    const double root = dc_hertz_stiffness(Yeff[itype][jtype], g.R_force, deltan, &kn, &Sn);
+    const double kt = dc_mindlin_kt_circle(Geff[itype][jtype], g.R_area == g.R_force ? root : sqrt(g.R_area * deltan));
+    const double P = kn * deltan;
+    applyForce(sidata, P, deltan, sidata.vn, Sn, kn, kt, i_forces, j_forces);
+    if (!ax) return;
+    dc_contact c;
+    dc_hertz_normal(&g, Yeff[itype][jtype], deltan, &c);
+    publish(sidata, c, ax);
   }
 };
 

@@ -55,10 +55,12 @@ namespace ContactModels {
 template<>
 class TangentialModel<TANGENTIAL_CLASSICAL> : public TangentialModelBase
 {
+  typedef void (*IntersectFn)(TangentialModel *, const SurfacesIntersectData &, ForceData &, ForceData &);
+
 public:
   TangentialModel(LAMMPS *lmp, IContactHistorySetup *hsetup, class ContactModelBase *c) :
     TangentialModelBase(lmp, hsetup, c), law(DC_CT_SPRING_SLIDING), stiffness(DC_CT_KT_MINDLIN),
-    damping(DC_CT_DAMP_NONE), history_offset(-1), ntypes(0)
+    damping(DC_CT_DAMP_NONE), history_offset(-1), stride(1), intersect_(&intersect<DC_CT_SPRING_SLIDING, false>)
   {
     patch.request(c);
     handover.attach(c);
@@ -87,6 +89,7 @@ public:
   {
     patch.setup(lmp, c);
     handover.setup(lmp, hsetup);
+    intersect_ = patch.published() && !handover.active() ? pick<true>(law) : pick<false>(law);
     for (int k = 0; k < nfields(); k++) {
       const int off = hsetup->add_history_value(dc_classical_tangential_history[k].name,
                                                 dc_classical_tangential_history[k].flips ? "1" : "0");
@@ -98,7 +101,7 @@ public:
   {
     const char *caller = "tangential_model classical";
     const int n = registry.max_type();
-    ntypes = n;
+    stride = n + 1;
     double **mu = matrix(registry, "coeffFrict", &MODEL_PARAMS::createCoeffFrict, law != DC_CT_VISCOUS);
     double **kt = matrix(registry, "kt", &createKt, stiffness == DC_CT_KT_GIVEN && springy());
     const bool given = law == DC_CT_VISCOUS || law == DC_CT_VISCOUS_SLIDING ||
@@ -138,31 +141,49 @@ public:
       }
   }
 
-  /* One dispatch on the law setting per contact (the same branch for the
-     whole run); each law's step is compiled with its law a constant. */
-  inline void surfacesIntersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  /* The law's own evaluation, chosen once from the setting: one indirect
+     call per contact. */
+  __attribute__((always_inline)) inline void surfacesIntersect(const SurfacesIntersectData &sidata,
+                                                               ForceData &i_forces, ForceData &j_forces)
   {
-    switch (law) {
-    case DC_CT_COULOMB: return intersect<DC_CT_COULOMB>(sidata, i_forces, j_forces);
-    case DC_CT_VISCOUS: return intersect<DC_CT_VISCOUS>(sidata, i_forces, j_forces);
-    case DC_CT_VISCOUS_SLIDING: return intersect<DC_CT_VISCOUS_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_SPRING_SLIDING: return intersect<DC_CT_SPRING_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_SPRING_DASHPOT_SLIDING: return intersect<DC_CT_SPRING_DASHPOT_SLIDING>(sidata, i_forces, j_forces);
-    case DC_CT_DI_RENZO: return intersect<DC_CT_DI_RENZO>(sidata, i_forces, j_forces);
-    case DC_CT_LANGSTON: return intersect<DC_CT_LANGSTON>(sidata, i_forces, j_forces);
-    case DC_CT_ZHENG: return intersect<DC_CT_ZHENG>(sidata, i_forces, j_forces);
-    case DC_CT_TSUJI: return intersect<DC_CT_TSUJI>(sidata, i_forces, j_forces);
-    default: return intersect<DC_CT_INCREMENTAL>(sidata, i_forces, j_forces);
-    }
+    intersect_(this, sidata, i_forces, j_forces);
   }
 
-  template<int LAW>
-  void intersect(const SurfacesIntersectData &sidata, ForceData &i_forces, ForceData &j_forces)
+  /* One law's evaluation, its law a constant in the step (compiled as
+     scalar code: GCC's basic-block vectorizer adds shuffles here); PLAIN:
+     the normal model publishes the patch and no rolling model shares the
+     contact (both known at set-up). */
+  template<int LAW, bool PLAIN>
+  __attribute__((optimize("no-tree-slp-vectorize"))) static void intersect(TangentialModel *self,
+                                                                           const SurfacesIntersectData &sidata,
+                                                                           ForceData &i_forces, ForceData &j_forces)
+  {
+    self->intersectLaw<LAW, PLAIN>(sidata, i_forces, j_forces);
+  }
+  template<bool PLAIN>
+  static IntersectFn pick(int law)
+  {
+    switch (law) {
+    case DC_CT_COULOMB: return &intersect<DC_CT_COULOMB, PLAIN>;
+    case DC_CT_VISCOUS: return &intersect<DC_CT_VISCOUS, PLAIN>;
+    case DC_CT_VISCOUS_SLIDING: return &intersect<DC_CT_VISCOUS_SLIDING, PLAIN>;
+    case DC_CT_SPRING_SLIDING: return &intersect<DC_CT_SPRING_SLIDING, PLAIN>;
+    case DC_CT_SPRING_DASHPOT_SLIDING: return &intersect<DC_CT_SPRING_DASHPOT_SLIDING, PLAIN>;
+    case DC_CT_DI_RENZO: return &intersect<DC_CT_DI_RENZO, PLAIN>;
+    case DC_CT_LANGSTON: return &intersect<DC_CT_LANGSTON, PLAIN>;
+    case DC_CT_ZHENG: return &intersect<DC_CT_ZHENG, PLAIN>;
+    case DC_CT_TSUJI: return &intersect<DC_CT_TSUJI, PLAIN>;
+    default: return &intersect<DC_CT_INCREMENTAL, PLAIN>;
+    }
+  }
+  template<int LAW, bool PLAIN>
+  __attribute__((always_inline)) inline void intersectLaw(const SurfacesIntersectData &sidata, ForceData &i_forces,
+                                                          ForceData &j_forces)
   {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_TANGENTIAL_MODEL;
     dc_patch stock;
-    const dc_patch &p = patch.read(sidata, stock);
-    if (handover.active() && handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
+    const dc_patch &p = PLAIN ? patch.publishedPatch() : patch.read(sidata, stock);
+    if (!PLAIN && handover.active() && handover.rolls(lmp, sidata, p)) {   /* the rolling model owns the tangential force */
       if (sidata.computeflag && sidata.shearupdate)
         memset(&sidata.contact_history[history_offset], 0, nfields() * sizeof(double));
       return;
@@ -181,11 +202,10 @@ public:
        normal and velocities, the normal model's patch): the step unchecked,
        its results checked; on an error the checked step names the cause */
     dc_classical_tangential_out out;
-    const dc_classical_tangential *m = &models[sidata.itype * (ntypes + 1) + sidata.jtype];
+    const dc_classical_tangential *m = &models[sidata.itype * stride + sidata.jtype];
     if (dc_classical_tangential_step_law(LAW, 0, m, &p, &c, sidata.en, NULL, vt, update->dt, h, &out) != DC_OK)
       fail(sidata, *m, p, *h);
-    const double F[3] = {-out.Ft[0], -out.Ft[1], -out.Ft[2]};   /* on i */
-    applyTangentialForce(sidata, F, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);
+    applyTangentialForceAs<true>(sidata, out.Ft, sidata.cri, sidata.crj, atom->x, i_forces, j_forces);   /* Ft on j */
   }
 
   /* Apart: the spring is released (as stock tangential history). */
@@ -244,7 +264,8 @@ private:
   { return MODEL_PARAMS::createPerTypePairProperty(r, "tangentialViscoelasticTime", c, s, 0.0); }
 
   int law, stiffness, damping;
-  int history_offset, ntypes;
+  int history_offset, stride;   /* stride: the number of types + 1, of models' rows */
+  IntersectFn intersect_;       /* the law's evaluation */
   std::vector<dc_classical_tangential> models;
   ContactPatchReader patch;
   RollingHandover handover;

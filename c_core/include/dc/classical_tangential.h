@@ -164,7 +164,8 @@ typedef struct {
    or NULL for vt dt (dt > 0 is read only then); vt: the relative
    tangential velocity (parts along n are removed from du and vt). Updates
    h. DC_EDOM for a non-finite or out-of-domain input, DC_ERANGE when a
-   result overflows; on an error h and out are untouched. No allocation. */
+   result overflows (or the results come within a factor 11 of DBL_MAX);
+   on an error h and out are untouched. No allocation. */
 int dc_classical_tangential_step(const dc_classical_tangential *m, const dc_patch *patch,
                                  const dc_classical_tangential_contact *c, const double n[3],
                                  const double du[3], const double vt[3], double dt,

@@ -131,12 +131,19 @@ int dc_hertz_normal(const dc_hertz_geom *g, double Estar, double delta, dc_conta
    leaves the doubles (call dc_hertz_normal then), 1 otherwise. */
 static inline int dc_hertz_patch_circle(double R, double delta, double F, dc_patch *p)
 {
-  const double a = delta > 0.0 ? sqrt(2.0 * R * delta * (0.25 * M_PI) / (0.5 * M_PI)) : 0.0;
-  if (!(a <= DBL_MAX && F <= DBL_MAX) || (a == 0.0 && delta > 0.0)) return 0;
+  double a = 0.0, Fp = 0.0, formed = 0.0;
+  if (delta > 0.0) {   /* a touching contact (the hot path) */
+    a = sqrt(2.0 * R * delta * (0.25 * M_PI) / (0.5 * M_PI));
+    if (!(a <= DBL_MAX && F <= DBL_MAX) || a == 0.0) return 0;
+    Fp = F;
+    formed = 1.0;
+  } else if (!(F <= DBL_MAX)) {
+    return 0;
+  }
   p->a = p->b = a;
   p->axis[0] = p->axis[1] = p->axis[2] = 0.0;
-  p->F_elastic = p->F_bound = delta > 0.0 ? F : 0.0;
-  p->formed = delta > 0.0 ? 1.0 : 0.0;
+  p->F_elastic = p->F_bound = Fp;
+  p->formed = formed;
   return 1;
 }
 

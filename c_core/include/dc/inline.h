@@ -1,13 +1,17 @@
 /* Hot-path helpers of the laws. DC_INLINE: a static helper of a law's hot path, always inlined where the
    compiler supports it, so that the values a step passes between its parts
-   stay in registers (an out-of-line helper's arrays go through memory). */
+   stay in registers (an out-of-line helper's arrays go through memory).
+   DC_COLD: a static helper of a rare branch, kept out of line (it takes
+   its vectors by value, so that the hot path's stay in registers). */
 #ifndef DC_INLINE_H
 #define DC_INLINE_H
 
 #if defined(__GNUC__)
 #define DC_INLINE static inline __attribute__((always_inline))
+#define DC_COLD static __attribute__((noinline, cold, unused))
 #else
 #define DC_INLINE static inline
+#define DC_COLD static inline
 #endif
 
 /* 0 for a finite x, NaN otherwise: a sum of them is 0 exactly when every
