@@ -157,9 +157,6 @@ int dc_cmd_twist_slip_moment(double mu, double F, double a, double b, double *M)
 
 #define MAXP (3 * (DC_CMD_MAX_SEG + 1) + 4)
 #define SLIVER 1e-13   /* narrower pieces (in xi) join a neighbour */
-/* before a loop over the (at most 3) components: GCC's -O2 leaves such
-   loops rolled, their sums going through memory */
-#define UNROLL3 _Pragma("GCC unroll 3")
 
 typedef struct {
   double x0, x1;
@@ -191,7 +188,7 @@ static inline double limit_at(double L0, double x) { return L0 * ((1.0 - x) * (1
 DC_INLINE double sq(int dim, const double *v)
 {
   double s = 0.0;
-  UNROLL3 for (int k = 0; k < dim; k++) s += v[k] * v[k];
+  DC_UNROLL3 for (int k = 0; k < dim; k++) s += v[k] * v[k];
   return s;
 }
 
@@ -216,7 +213,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
       piece *o = &out[(*nout)++];
       o->x0 = x0;
       o->x1 = x1;
-      UNROLL3 for (int k = 0; k < dim; k++) {
+      DC_UNROLL3 for (int k = 0; k < dim; k++) {
         o->v0[k] = p0[k];
         o->v1[k] = p1[k];
       }
@@ -225,7 +222,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
     }
   }
   double q[3];
-  UNROLL3 for (int k = 0; k < dim; k++) q[k] = p1[k] - p0[k];
+  DC_UNROLL3 for (int k = 0; k < dim; k++) q[k] = p1[k] - p0[k];
   /* g(t) = |p(t)|^2 - l(t)^2 = A t^2 + 2 B t + C, scaled by 1/S^2 only
      where the squares could leave the doubles: S = max(l0, |p0|, |p1|)
      (max norm) outside [1e-150, 1e150]; it lies there (scale 1) when l0
@@ -233,12 +230,12 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
   double S = 1.0, iS = 1.0;
   if (!(l0 >= 1e-150 && l0 <= 1e150 && n0 <= 1e298 && n1 <= 1e298)) {
     S = l0;
-    UNROLL3 for (int k = 0; k < dim; k++) S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
+    DC_UNROLL3 for (int k = 0; k < dim; k++) S = max2(S, max2(fabs(p0[k]), fabs(p1[k])));
     iS = S > 0.0 && (S < 1e-150 || S > 1e150) ? 1.0 / S : 1.0;
   }
   const double la = l0 * iS, dl = (l1 - l0) * iS;
   double A = -dl * dl, B = -la * dl, C = -la * la;
-  UNROLL3 for (int k = 0; k < dim; k++) {
+  DC_UNROLL3 for (int k = 0; k < dim; k++) {
     const double ps = p0[k] * iS, qs = q[k] * iS;
     A += qs * qs;
     B += ps * qs;
@@ -255,7 +252,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
     piece *o = &out[(*nout)++];
     o->x0 = x0;
     o->x1 = x1;
-    UNROLL3 for (int k = 0; k < dim; k++) {
+    DC_UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = p0[k];
       o->v1[k] = p1[k];
     }
@@ -289,7 +286,7 @@ DC_INLINE void clamp_piece(int dim, double x0, double x1, double l0, double l1, 
     o->x0 = i == 0 ? x0 : sqrt(s0 + ta * ds);
     o->x1 = i + 2 == nt ? x1 : sqrt(s0 + tb * ds);
     double g = 0.0;
-    UNROLL3 for (int k = 0; k < dim; k++) {
+    DC_UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = i == 0 ? p0[k] : p0[k] + q[k] * ta;
       o->v1[k] = i + 2 == nt ? p1[k] : p0[k] + q[k] * tb;
       const double v = (p0[k] + q[k] * tm) * iS;
@@ -336,12 +333,12 @@ DC_INLINE double group(int dim, piece *pc, int np, double L0, int *nout)
     do {
       const double h = pc[j].x1 - pc[j].x0, w = piece_w(pc[j].x0, pc[j].x1);
       double Ij[3], dot = 0.0;
-      UNROLL3 for (int k = 0; k < dim; k++) {
+      DC_UNROLL3 for (int k = 0; k < dim; k++) {
         Ij[k] = h * ((1.0 - w) * pc[j].v0[k] + w * pc[j].v1[k]);
         dot += Ij[k] * I[k];
       }
       if (j > i && dot < 0.0) break;   /* opposite slip: a zone of its own */
-      UNROLL3 for (int k = 0; k < dim; k++) I[k] += Ij[k];
+      DC_UNROLL3 for (int k = 0; k < dim; k++) I[k] += Ij[k];
       xb = pc[j].x1;
       j++;
     } while (j < np && pc[j].slip);
@@ -351,7 +348,7 @@ DC_INLINE double group(int dim, piece *pc, int np, double L0, int *nout)
     o->slip = 1;
     norm_dir(dim, I, o->e);
     const double la = L0 * ((1.0 - xa) * (1.0 + xa)), lb = L0 * ((1.0 - xb) * (1.0 + xb));
-    UNROLL3 for (int k = 0; k < dim; k++) {
+    DC_UNROLL3 for (int k = 0; k < dim; k++) {
       o->v0[k] = la * o->e[k];
       o->v1[k] = lb * o->e[k];
     }
@@ -378,25 +375,25 @@ DC_INLINE int tidy(int dim, piece *pc, int np, double L0)
       piece *q = &pc[no - 1];
       if (p->slip && q->slip) {
         double d = 0.0;
-        UNROLL3 for (int k = 0; k < dim; k++) d += p->e[k] * q->e[k];
+        DC_UNROLL3 for (int k = 0; k < dim; k++) d += p->e[k] * q->e[k];
         if (d > 1.0 - 1e-14) {
           q->x1 = p->x1;
           const double lb = L0 * ((1.0 - q->x1) * (1.0 + q->x1));
-          UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
+          DC_UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = lb * q->e[k];
           continue;
         }
       } else if (!p->slip && !q->slip) {
         /* q continued linearly in xi^2 to p's outer end */
         int same = 1;
-        UNROLL3 for (int k = 0; k < dim && same; k++) same = fabs(q->v1[k] - p->v0[k]) <= tol;
+        DC_UNROLL3 for (int k = 0; k < dim && same; k++) same = fabs(q->v1[k] - p->v0[k]) <= tol;
         if (same) {
           const double f = (p->x1 - q->x0) * (p->x1 + q->x0) / ((q->x1 - q->x0) * (q->x1 + q->x0));
-          UNROLL3 for (int k = 0; k < dim && same; k++)
+          DC_UNROLL3 for (int k = 0; k < dim && same; k++)
             same = fabs(q->v0[k] + (q->v1[k] - q->v0[k]) * f - p->v1[k]) <= tol;
         }
         if (same) {
           q->x1 = p->x1;
-          UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = p->v1[k];
+          DC_UNROLL3 for (int k = 0; k < dim; k++) q->v1[k] = p->v1[k];
           continue;
         }
       }
@@ -435,7 +432,7 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f)
     moments(p->x0, p->x1, &J1, &J2);
     const double J0 = p->x1 - p->x0;
     const double lam = (p->x0 - xa) * (p->x0 + xa) / S, kap = (p->x1 - p->x0) * (p->x1 + p->x0) / S;
-    UNROLL3 for (int k = 0; k < dim; k++) {
+    DC_UNROLL3 for (int k = 0; k < dim; k++) {
       const double dv = p->v1[k] - p->v0[k];
       const double I0 = p->v0[k] * J0 + dv * J1, Ip = p->v0[k] * J1 + dv * J2;
       m0[k] += I0;
@@ -448,7 +445,7 @@ DC_INLINE double merge_fit(int dim, const piece *pc, int i, piece *f)
   f->x0 = xa;
   f->x1 = xb;
   f->slip = 0;
-  UNROLL3 for (int k = 0; k < dim; k++) {
+  DC_UNROLL3 for (int k = 0; k < dim; k++) {
     const double vb = pc[i + 1].v1[k];
     const double c0 = w > 0.0 ? (m0[k] - vb * g01) / w : vb, c1 = vb - c0;
     f->v0[k] = c0;
@@ -470,7 +467,7 @@ DC_INLINE void piece_moments(int dim, const piece *p, pmom *m)
   moments(p->x0, p->x1, &m->J1, &m->J2);
   m->J0 = p->x1 - p->x0;
   m->e2 = 0.0;
-  UNROLL3 for (int k = 0; k < dim; k++) {
+  DC_UNROLL3 for (int k = 0; k < dim; k++) {
     const double dv = p->v1[k] - p->v0[k];
     m->I0[k] = p->v0[k] * m->J0 + dv * m->J1;
     m->Ip[k] = p->v0[k] * m->J1 + dv * m->J2;
@@ -487,7 +484,7 @@ DC_INLINE double merge_cost(int dim, const piece *pc, const pmom *pm, int i)
   const double g00 = xb - xa, w = g00 - g01;
   const double iS = 1.0 / S, kap0 = (xm - xa) * (xm + xa) * iS, lam1 = kap0, kap1 = (xb - xm) * (xb + xm) * iS;
   double cross = 0.0, self = 0.0;
-  UNROLL3 for (int k = 0; k < dim; k++) {
+  DC_UNROLL3 for (int k = 0; k < dim; k++) {
     const double m0 = pm[i].I0[k] + pm[i + 1].I0[k];
     const double m1 = kap0 * pm[i].Ip[k] + lam1 * pm[i + 1].I0[k] + kap1 * pm[i + 1].Ip[k];
     const double vb = pc[i + 1].v1[k];
@@ -508,7 +505,7 @@ DC_INLINE void merged_piece(int dim, const piece *pc, const pmom *pm, int i, pie
   f->x0 = xa;
   f->x1 = xb;
   f->slip = 0;
-  UNROLL3 for (int k = 0; k < dim; k++) {
+  DC_UNROLL3 for (int k = 0; k < dim; k++) {
     const double vb = pc[i + 1].v1[k], m0 = (0.0 + pm[i].I0[k]) + pm[i + 1].I0[k];
     f->v0[k] = w > 0.0 ? (m0 - vb * g01) / w : vb;
     f->v1[k] = vb;
@@ -554,7 +551,7 @@ static inline void project_keep(const double *b, double *v)
   const double l = norm_dir(3, v, e), en = dc_dot3(e, b);
   double r[3] = {e[0] - en * b[0], e[1] - en * b[1], e[2] - en * b[2]};
   const double lr = norm_dir(3, r, r);
-  UNROLL3 for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
+  DC_UNROLL3 for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * r[k] : 0.0;
 }
 
 /* The turn of the stored force profile with the contact plane (the
@@ -572,7 +569,7 @@ typedef struct {
 DC_INLINE void turn_apply(const cmd_turn *tr, const double *v, double *out)
 {
   if (tr->keep) {
-    UNROLL3 for (int k = 0; k < 3; k++) out[k] = v[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) out[k] = v[k];
     project_keep(tr->nh, out);
   } else {
     const double v0 = v[0], v1 = v[1], v2 = v[2];
@@ -587,7 +584,7 @@ DC_INLINE void turn_add(const cmd_turn *tr, const double *v, const double *d, do
 {
   if (tr->keep) {
     turn_apply(tr, v, out);
-    UNROLL3 for (int k = 0; k < 3; k++) out[k] += d[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) out[k] += d[k];
   } else {
     const double v0 = v[0], v1 = v[1], v2 = v[2];
     out[0] = tr->M[0][0] * v0 + tr->M[0][1] * v1 + tr->M[0][2] * v2 + d[0];
@@ -627,7 +624,7 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
           a1 = t1;
         }
         const double t = (1.0 - xs) * (1.0 + xs) / ((xe - xs) * (xe + xs));
-        UNROLL3 for (int k = 0; k < dim; k++) {
+        DC_UNROLL3 for (int k = 0; k < dim; k++) {
           p0[k] = a0[k] + d[k];
           p1[k] = a0[k] + (a1[k] - a0[k]) * t + d[k];
         }
@@ -637,7 +634,7 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
         turn_add(tr, a0, d, p0);
         turn_add(tr, a1, d, p1);
       } else {
-        UNROLL3 for (int k = 0; k < dim; k++) {
+        DC_UNROLL3 for (int k = 0; k < dim; k++) {
           p0[k] = a0[k] + d[k];
           p1[k] = a1[k] + d[k];
         }
@@ -669,10 +666,10 @@ DC_INLINE int profile_step(int dim, int n, const double *seg, const cmd_turn *tr
     }
   }
   no = cap(dim, out, no);
-  UNROLL3 for (int k = 0; k < dim; k++) I[k] = 0.0;
+  DC_UNROLL3 for (int k = 0; k < dim; k++) I[k] = 0.0;
   for (int j = 0; j < no; j++) {
     const double h = out[j].x1 - out[j].x0, w = piece_w(out[j].x0, out[j].x1);
-    UNROLL3 for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
+    DC_UNROLL3 for (int k = 0; k < dim; k++) I[k] += h * ((1.0 - w) * out[j].v0[k] + w * out[j].v1[k]);
   }
   return no;
 }
@@ -771,7 +768,7 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
 {
   const double a = patch->a, b = patch->b;
   const double nn = dc_dot3(n, n), in = 1.0 / sqrt(nn);
-  UNROLL3 for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
+  DC_UNROLL3 for (int k = 0; k < 3; k++) f->nh[k] = n[k] * in;
   const double *nh = f->nh;
   f->tnu = m->s1 / m->s0;
   f->cm = (2.0 - f->tnu) * (M_PI / 4.0);
@@ -785,18 +782,18 @@ DC_INLINE int cmd_frame_of(const dc_mindlin_pair *m, const dc_patch *patch, cons
     axis_compliances(f->tnu, &f->el, &f->cm, &cn);
     f->rho = f->cm / cn;   /* k_minor / k_major */
     const double an = dc_dot3(patch->axis, nh);
-    UNROLL3 for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) f->ax[k] = patch->axis[k] - an * nh[k];
     const double al = norm_dir(3, f->ax, f->ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
   }
   f->k_major = pq(2.0 * M_PI, a, 1.0, 1.0, m->s0, f->cm);
   const double dn = dc_dot3(du, nh);
-  UNROLL3 for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
+  DC_UNROLL3 for (int k = 0; k < 3; k++) f->dut[k] = du[k] - dn * nh[k];
   if (f->ell) {
     const double da = (1.0 - f->rho) * dc_dot3(f->ax, f->dut);
-    UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->rho * f->dut[k] + da * f->ax[k];
   } else {
-    UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) f->d[k] = f->dut[k];
   }
   return DC_OK;
 }
@@ -844,10 +841,10 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
   double stick, I[3];
   const int nfp = profile_step3(nsu, seg, tr, r, f->d, L0, pf, &stick, I);
   *I_nf = (dc_nf(I[0]) + dc_nf(I[1])) + dc_nf(I[2]);
-  UNROLL3 for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
+  DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] = f->k_major * I[k];
   {
     const double fn = dc_dot3(F, nh);
-    UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
   }
   double kt = stick * f->k_major;
   if (f->ell) {
@@ -862,22 +859,22 @@ DC_INLINE int cmd_force(const dc_cmd_params *p, const dc_mindlin_pair *m, const 
     /* Eq. 85: A_t (theta K0) d(delta)/dt */
     const double fd = p->t_visc / dt * stick * f->k_major;
     double G[3];
-    UNROLL3 for (int k = 0; k < 3; k++) G[k] = F[k] + fd * f->d[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) G[k] = F[k] + fd * f->d[k];
     if (isfinite(G[0]) && isfinite(G[1]) && isfinite(G[2])) {
-      UNROLL3 for (int k = 0; k < 3; k++) F[k] = G[k];
+      DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] = G[k];
     } else if (norm_dir(3, f->d, G) > 0.0) {   /* the viscous part dominates: at the limit along d */
-      UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * G[k];
+      DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * G[k];
     }
   }
   {
     double e[3];
     const double fn = dc_dot3(F, nh);   /* the viscous part may leave the plane by rounding */
-    UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
+    DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] -= fn * nh[k];
     /* clipped onto the limit (rounding, dissipation); the squares decide
        only where they are normal doubles clearly inside it */
     const double f2 = dc_dot3(F, F), l2 = lim * lim;
     if (!(f2 >= DBL_MIN && l2 <= DBL_MAX && f2 < (1.0 - 1e-14) * l2) && norm_dir(3, F, e) > lim)
-      UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * e[k];
+      DC_UNROLL3 for (int k = 0; k < 3; k++) F[k] = lim * e[k];
   }
   *kt_out = kt;
   *stick_out = stick;
@@ -934,7 +931,7 @@ DC_INLINE int cmd_results_finite(const double *F, double kt, double stick, doubl
 DC_INLINE void cmd_commit(const dc_cmd_params *p, const double *nh, double a, const piece *pf, int nfp, int ns,
                           const piece *pt, int ntw, int nt, dc_cmd_state *h)
 {
-  UNROLL3 for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
+  DC_UNROLL3 for (int k = 0; k < 3; k++) h->n_prev[k] = nh[k];
   h->a_prev = a;
   h->nseg = nfp;
   for (int j = 0; j < nfp; j++) memcpy(&h->seg[j], (const char *)&pf[j] + offsetof(piece, x1), sizeof(dc_cmd_piece));
@@ -982,7 +979,7 @@ DC_INLINE int cmd_step(int checked, const dc_cmd_params *p, const dc_mindlin_pai
   const int ntw = p->twisting ? cmd_twist(p, m, patch, &f, h, fresh ? 0 : nt, r, dphi, pt, &Mt, &kr, &I_nf) : 0;
   if (!cmd_results_finite(F, kt, stick, Mt, kr, I_nf, pf, nfp, pt, ntw)) return DC_ERANGE;
 
-  UNROLL3 for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
+  DC_UNROLL3 for (int k = 0; k < 3; k++) out->Ft[k] = F[k];
   out->kt = kt;
   out->stick = stick;
   out->Mt = Mt;

@@ -68,10 +68,10 @@ typedef struct {
 DC_INLINE double anchor_of(int dim, const mem *s, double *A)
 {
   if (!s->nt) {
-    for (int c = 0; c < dim; c++) A[c] = 0.0;
+    DC_UNROLL3 for (int c = 0; c < dim; c++) A[c] = 0.0;
     return 1.0;
   }
-  for (int c = 0; c < dim; c++) A[c] = s->T[s->nt - 1][c];
+  DC_UNROLL3 for (int c = 0; c < dim; c++) A[c] = s->T[s->nt - 1][c];
   return 2.0;
 }
 
@@ -88,7 +88,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
   }
   double A[3], X[3];
   double m = anchor_of(dim, s, A);
-  for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
+  DC_UNROLL3 for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
   double xm = vnorm(dim, X), th2 = 1.0 - s->c2;
   if (S != Sp) {
     if (S < Sp) {
@@ -98,7 +98,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       const double red = (Sp - S) * (1.0 - sqrt(th2));
       double f = xm > red ? (xm - red) / xm : 0.0;
       if (f * xm > m * S) f = m * S / xm;   /* within the branch's range */
-      for (int c = 0; c < dim; c++) {
+      DC_UNROLL3 for (int c = 0; c < dim; c++) {
         X[c] *= f;
         s->F[c] = A[c] + X[c];
       }
@@ -109,13 +109,13 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
         if (t2 <= S * S && t2 >= 1e-300 && S * S <= 1e300) continue;   /* inside, decided by the squares */
         const double tm = vnorm(dim, s->T[j]);
         if (tm > S) {
-          for (int c = 0; c < dim; c++) s->T[j][c] *= S / tm;
+          DC_UNROLL3 for (int c = 0; c < dim; c++) s->T[j][c] *= S / tm;
           clipped = 1;
         }
       }
       if (clipped) {
         anchor_of(dim, s, A);
-        for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
+        DC_UNROLL3 for (int c = 0; c < dim; c++) X[c] = s->F[c] - A[c];
         xm = vnorm(dim, X);
       }
     }
@@ -127,14 +127,14 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
     /* a subnormal force has too few bits for a direction: a fresh branch */
     if (!(xm >= DBL_MIN)) xm = 0.0;
     if (xm > 0.0) {   /* the branch's direction, and the displacement along it */
-      for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
+      DC_UNROLL3 for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
       dp = dim == 1 ? d[0] * e[0] : dc_dot3(d, e);
     }
     if (dp < 0.0) {
       /* reversal: F pushed (the newest turning point forgotten with the
          one before when the memory is full) */
       if (s->nt == NT) s->nt -= 2;
-      for (int c = 0; c < dim; c++) s->T[s->nt][c] = A[c] = s->F[c];
+      DC_UNROLL3 for (int c = 0; c < dim; c++) s->T[s->nt][c] = A[c] = s->F[c];
       s->nt++;
       m = 2.0;
       xm = 0.0;
@@ -145,14 +145,14 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       if (dim == 3) {   /* the part across X turns it with the stuck core's stiffness */
         const double kth = k * sqrt(th2);
         double Y[3];
-        for (int c = 0; c < 3; c++) Y[c] = X[c] + kth * (d[c] - dp * e[c]);
+        DC_UNROLL3 for (int c = 0; c < 3; c++) Y[c] = X[c] + kth * (d[c] - dp * e[c]);
         const double ym = vnorm(3, Y);
         if (ym > 0.0)
-          for (int c = 0; c < 3; c++) e[c] = Y[c] / ym;
+          DC_UNROLL3 for (int c = 0; c < 3; c++) e[c] = Y[c] / ym;
       }
     } else {
       const double dm = vnorm(dim, d);
-      for (int c = 0; c < dim; c++) e[c] = d[c] / dm;
+      DC_UNROLL3 for (int c = 0; c < dim; c++) e[c] = d[c] / dm;
       sa = dm;
     }
     for (;;) {
@@ -168,7 +168,7 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       /* the range of the branch before: |previous turning point - anchor| */
       const double mb = s->nt >= 2 ? 2.0 : 1.0;
       double R[3];
-      for (int c = 0; c < dim; c++) R[c] = A[c] - (s->nt >= 2 ? s->T[s->nt - 2][c] : 0.0);
+      DC_UNROLL3 for (int c = 0; c < dim; c++) R[c] = A[c] - (s->nt >= 2 ? s->T[s->nt - 2][c] : 0.0);
       const double qr = vnorm(dim, R) / (mb * S), qe = qr < 1.0 ? qr : 1.0, q = 1.0 - t3;
       if (q < qe) {
         th2 = t2;
@@ -181,22 +181,22 @@ DC_INLINE double mem_step(int dim, mem *s, const double *d, double k, double S, 
       sa -= (th2 - te2) / g;
       if (sa < 0.0) sa = 0.0;
       double Fp[3];
-      for (int c = 0; c < dim; c++) Fp[c] = A[c] + e[c] * (2.0 * S * qe);
+      DC_UNROLL3 for (int c = 0; c < dim; c++) Fp[c] = A[c] + e[c] * (2.0 * S * qe);
       s->nt = s->nt >= 2 ? s->nt - 2 : 0;
       m = anchor_of(dim, s, A);
-      for (int c = 0; c < dim; c++) X[c] = Fp[c] - A[c];
+      DC_UNROLL3 for (int c = 0; c < dim; c++) X[c] = Fp[c] - A[c];
       xm = vnorm(dim, X);
       if (xm > 0.0)
-        for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
+        DC_UNROLL3 for (int c = 0; c < dim; c++) e[c] = X[c] / xm;
       th2 = theta2_of(xm / (m * S), te2);
     }
-    for (int c = 0; c < dim; c++) s->F[c] = A[c] + e[c] * xm;
+    DC_UNROLL3 for (int c = 0; c < dim; c++) s->F[c] = A[c] + e[c] * xm;
   }
   s->c2 = th2 < 1.0 ? 1.0 - th2 : 0.0;
   if (s->nt) {   /* |F| <= S; full slip clears the memory (the virgin branch is within it) */
     const double fm = vnorm(dim, s->F);
     if (fm >= S) {
-      for (int c = 0; c < dim; c++) s->F[c] *= S / fm;
+      DC_UNROLL3 for (int c = 0; c < dim; c++) s->F[c] *= S / fm;
       s->nt = 0;
       s->c2 = 1.0;
       return 0.0;
@@ -223,7 +223,7 @@ DC_INLINE void project_keep(const double *b, double *v)
   const double l = vnorm(3, v), vn = dc_dot3(v, b);
   double r[3] = {v[0] - vn * b[0], v[1] - vn * b[1], v[2] - vn * b[2]};
   const double lr = vnorm(3, r);
-  for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * (r[k] / lr) : 0.0;
+  DC_UNROLL3 for (int k = 0; k < 3; k++) v[k] = lr > 0.0 ? l * (r[k] / lr) : 0.0;
 }
 
 /* The stored vectors turned with the contact plane (as the exact law's
@@ -320,39 +320,39 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     k = 2.0 * M_PI * a / (m->s0 * cm);
     rho = cm / (el.K - t * el.D);   /* k_minor / k_major */
     const double an = dc_dot3(patch->axis, nh);
-    for (int c = 0; c < 3; c++) ax[c] = patch->axis[c] - an * nh[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) ax[c] = patch->axis[c] - an * nh[c];
     const double al = vnorm(3, ax);
     if (!(al > 0.0)) return DC_EDOM;   /* axis along n */
-    for (int c = 0; c < 3; c++) ax[c] /= al;
+    DC_UNROLL3 for (int c = 0; c < 3; c++) ax[c] /= al;
   }
   const double dn = dc_dot3(du, nh);
   double dut[3], d[3];
-  for (int c = 0; c < 3; c++) dut[c] = du[c] - dn * nh[c];
+  DC_UNROLL3 for (int c = 0; c < 3; c++) dut[c] = du[c] - dn * nh[c];
   if (ell) {
     const double da = (1.0 - rho) * dc_dot3(ax, dut);
-    for (int c = 0; c < 3; c++) d[c] = rho * dut[c] + da * ax[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) d[c] = rho * dut[c] + da * ax[c];
   } else {
-    for (int c = 0; c < 3; c++) d[c] = dut[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) d[c] = dut[c];
   }
 
   /* the force's memory */
   const double S = p->mu * patch->F_bound;
   mem f;
-  for (int c = 0; c < 3; c++) f.F[c] = h->F[c];
+  DC_UNROLL3 for (int c = 0; c < 3; c++) f.F[c] = h->F[c];
   f.c2 = h->c2;
   f.nt = nf;
   for (int j = 0; j < nf; j++)
-    for (int c = 0; c < 3; c++) f.T[j][c] = h->T[j][c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) f.T[j][c] = h->T[j][c];
   turn_plane(h->n_prev, nh, &f);
   const double th = mem_step(3, &f, d, k, S, h->S_prev);
   {   /* in the plane and within the limit to rounding (an anchor and an
          excess that nearly cancel, a displacement that dwarfs the normal,
          a subnormal force) */
     const double fn = dc_dot3(f.F, nh);
-    for (int c = 0; c < 3; c++) f.F[c] -= fn * nh[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) f.F[c] -= fn * nh[c];
     const double fm = vnorm(3, f.F);
     if (fm > S)
-      for (int c = 0; c < 3; c++) f.F[c] *= S / fm;
+      DC_UNROLL3 for (int c = 0; c < 3; c++) f.F[c] *= S / fm;
   }
   double F[3] = {f.F[0], f.F[1], f.F[2]};
   double kt = th * k;
@@ -361,7 +361,7 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     double l = vnorm(3, dut);
     const double *v = dut;
     if (!(l > 0.0)) { l = vnorm(3, F); v = F; }
-    for (int c = 0; c < 3; c++) dir[c] = l > 0.0 ? v[c] / l : 0.0;
+    DC_UNROLL3 for (int c = 0; c < 3; c++) dir[c] = l > 0.0 ? v[c] / l : 0.0;
     const double ea = dc_dot3(dir, ax);
     kt *= l > 0.0 ? rho + (1.0 - rho) * ea * ea : 0.5 * (1.0 + rho);
   }
@@ -369,17 +369,17 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
     /* Eq. 85: A_t (theta K0) d(delta)/dt, not stored */
     const double fd = p->t_visc / dt * th * k;
     double G[3];
-    for (int c = 0; c < 3; c++) G[c] = F[c] + fd * d[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) G[c] = F[c] + fd * d[c];
     const double gn = dc_dot3(G, nh);
-    for (int c = 0; c < 3; c++) G[c] -= gn * nh[c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) G[c] -= gn * nh[c];
     const double gm = vnorm(3, G);
     if (isfinite(gm)) {
       const double s = gm > S ? S / gm : 1.0;
-      for (int c = 0; c < 3; c++) F[c] = s * G[c];
+      DC_UNROLL3 for (int c = 0; c < 3; c++) F[c] = s * G[c];
     } else {   /* the viscous part dominates: at the limit along d (a subnormal d has no direction) */
       const double dm = vnorm(3, d);
       if (dm >= DBL_MIN)
-        for (int c = 0; c < 3; c++) F[c] = S * (d[c] / dm);
+        DC_UNROLL3 for (int c = 0; c < 3; c++) F[c] = S * (d[c] / dm);
     }
   }
 
@@ -405,12 +405,12 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
                      ((dc_nf(f.F[0]) + dc_nf(f.F[1])) + (dc_nf(f.F[2]) + dc_nf(f.c2))) + ((dc_nf(Mt) + dc_nf(kr)) + dc_nf(th));
   if (fin != 0.0) return DC_ERANGE;
 
-  for (int c = 0; c < 3; c++) out->Ft[c] = F[c];
+  DC_UNROLL3 for (int c = 0; c < 3; c++) out->Ft[c] = F[c];
   out->kt = kt;
   out->stick = th;
   out->Mt = Mt;
   out->kr = kr;
-  for (int c = 0; c < 3; c++) {
+  DC_UNROLL3 for (int c = 0; c < 3; c++) {
     h->n_prev[c] = nh[c];
     h->F[c] = f.F[c];
   }
@@ -418,9 +418,9 @@ DC_INLINE int tp_step(int checked, const dc_cmd_params *restrict p, const dc_min
   h->S_prev = S;
   h->nturn = f.nt;
   for (int j = 0; j < f.nt; j++)
-    for (int c = 0; c < 3; c++) h->T[j][c] = f.T[j][c];
+    DC_UNROLL3 for (int c = 0; c < 3; c++) h->T[j][c] = f.T[j][c];
   for (int j = f.nt; j < nf; j++)
-    for (int c = 0; c < 3; c++) h->T[j][c] = 0.0;
+    DC_UNROLL3 for (int c = 0; c < 3; c++) h->T[j][c] = 0.0;
   if (p->twisting) {
     h->M = tw.F[0];
     h->c2_t = tw.c2;

@@ -14,6 +14,10 @@
 #define DC_COLD static inline
 #endif
 
+/* Before a loop over the (at most 3) components of a vector: GCC's -O2
+   leaves such loops rolled, their sums going through memory. */
+#define DC_UNROLL3 _Pragma("GCC unroll 3")
+
 /* 0 for a finite x, NaN otherwise: a sum of them is 0 exactly when every
    term is finite (never overflows), so one comparison checks many inputs
    without a branch each. */
