@@ -1997,6 +1997,7 @@ static void fuzz_mindlin(void)
 /* ---------------------------------------------------------------- */
 /* cmd_tangential.h                                                    */
 
+
 /* a material pair inside dc_mindlin_pair_init's range (s0 > 0, -s0 < s1 <= s0/2) */
 static dc_mindlin_pair cmd_pair(void)
 {
@@ -2010,6 +2011,64 @@ static int cmd_pair_ok(const dc_mindlin_pair *m)
 }
 
 static int cmd_axes_ok(double a, double b) { return ALLFIN(a, b) && b > 0.0 && b <= a && b >= 1e-150 * a; }
+
+/* One step's inputs of a Cattaneo-Mindlin law along a contact (the normal
+   n0 turning slowly, or jumping): bad, a non-finite input; dom, inside the
+   documented domain (not with a corrupted history). */
+typedef struct {
+  dc_cmd_params p;
+  dc_mindlin_pair m;
+  dc_patch pa;
+  double n[3], du[3], dphi, dt;
+  int bad, dom;
+} cmd_inputs;
+
+static void cmd_fuzz_inputs(double n0[3], int corrupt, cmd_inputs *in)
+{
+  in->p = (dc_cmd_params){A(U() < 0.9 ? U() : 0.0), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0), AI(U() < 0.5), AI(U() < 0.5)};
+  const dc_cmd_params p = in->p;
+  const dc_mindlin_pair m0 = cmd_pair();
+  const dc_mindlin_pair m = {A(m0.s0), A(m0.s1)};
+  in->m = m;
+  /* the normal turns slowly, or jumps */
+  double *n = in->n;
+  if (U() < 0.05) unit_vector(n0);
+  else {
+    for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
+    const double l = sqrt(dot3(n0, n0));
+    for (int i = 0; i < 3; i++) n0[i] /= l;
+  }
+  for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
+  dc_patch *pa = &in->pa;
+  const double a = A(U() < 0.6 ? fz_log(1e-7, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
+  pa->a = a;
+  pa->b = A(U() < 0.3 ? a : a * (U() < 0.7 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0)));
+  double ax[3];
+  unit_vector(ax);
+  for (int i = 0; i < 3; i++) pa->axis[i] = A(U() < 0.05 ? 0.0 : ax[i]);
+  pa->F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
+  pa->F_elastic = pa->F_bound;
+  pa->formed = A(U() < 0.02 ? 0.0 : 1.0);
+  const double scale = 1.5 * p.mu * pa->F_bound * m.s0 / (8.0 * a + 1e-300);
+  double *du = in->du;
+  for (int i = 0; i < 3; i++) du[i] = A(U() < 0.7 ? scale * fz_sign(fz_log(1e-6, 1e2)) : U() < 0.1 ? 0.0 : fz_wide());
+  in->dphi = A(U() < 0.7 ? scale / (a + 1e-300) * fz_sign(fz_log(1e-6, 1e2)) : fz_wide());
+  in->dt = A(U() < 0.8 ? fz_log(1e-8, 1e-3) : PICK(0.0, -1e-6));
+  const double dphi = in->dphi, dt = in->dt;
+  /* the promises */
+  const int bad = !ALLFIN(p.mu, a, pa->b, pa->axis[0], pa->axis[1], pa->axis[2], pa->F_bound, pa->formed, n[0], n[1],
+                          n[2], du[0], du[1], du[2], m.s0, m.s1) ||
+                  (p.twisting && !isfinite(dphi)) || (p.dissipation && !ALLFIN(dt, p.t_visc));
+  const double nn = dot3(n, n);
+  double axn = 0.0, axl = 0.0;
+  if (!bad) { axn = dot3(pa->axis, n); axl = dot3(pa->axis, pa->axis); }
+  const int axis_ok = pa->b >= (1.0 - 1e-6) * a || (fabs(axl - 1.0) < 1e-6 && fabs(axn) < 0.99);
+  in->bad = bad;
+  in->dom = !bad && !corrupt && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
+            (p.twisting == 0 || p.twisting == 1) && cmd_pair_ok(&m) && pa->F_bound >= 0.0 &&
+            (a == 0.0 ? pa->b == 0.0 : cmd_axes_ok(a, pa->b)) && fabs(nn - 1.0) <= 1e-6 &&
+            (!p.dissipation || dt > 0.0) && axis_ok;
+}
 
 static void fuzz_cmd(void)
 {
@@ -2090,45 +2149,13 @@ static void fuzz_cmd(void)
       hv[UI(DC_CMD_HISTORY_NFIELDS)] = fz_wild();
       corrupt = 1;
     }
-    dc_cmd_params p = {A(U() < 0.9 ? U() : 0.0), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0), AI(U() < 0.5), AI(U() < 0.5)};
-    const dc_mindlin_pair m0 = cmd_pair();
-    const dc_mindlin_pair m = {A(m0.s0), A(m0.s1)};
-    /* the normal turns slowly, or jumps */
-    double n[3];
-    if (U() < 0.05) unit_vector(n0);
-    else {
-      for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
-      const double l = sqrt(dot3(n0, n0));
-      for (int i = 0; i < 3; i++) n0[i] /= l;
-    }
-    for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
-    dc_patch pa;
-    const double a = A(U() < 0.6 ? fz_log(1e-7, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
-    pa.a = a;
-    pa.b = A(U() < 0.3 ? a : a * (U() < 0.7 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0)));
-    double ax[3];
-    unit_vector(ax);
-    for (int i = 0; i < 3; i++) pa.axis[i] = A(U() < 0.05 ? 0.0 : ax[i]);
-    pa.F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
-    pa.F_elastic = pa.F_bound;
-    pa.formed = A(U() < 0.02 ? 0.0 : 1.0);
-    const double scale = 1.5 * p.mu * pa.F_bound * m.s0 / (8.0 * a + 1e-300);
-    double du[3];
-    for (int i = 0; i < 3; i++) du[i] = A(U() < 0.7 ? scale * fz_sign(fz_log(1e-6, 1e2)) : U() < 0.1 ? 0.0 : fz_wide());
-    const double dphi = A(U() < 0.7 ? scale / (a + 1e-300) * fz_sign(fz_log(1e-6, 1e2)) : fz_wide());
-    const double dt = A(U() < 0.8 ? fz_log(1e-8, 1e-3) : PICK(0.0, -1e-6));
-    /* the promises */
-    const int bad = !ALLFIN(p.mu, a, pa.b, pa.axis[0], pa.axis[1], pa.axis[2], pa.F_bound, pa.formed, n[0], n[1], n[2],
-                            du[0], du[1], du[2], m.s0, m.s1) ||
-                    (p.twisting && !isfinite(dphi)) || (p.dissipation && !ALLFIN(dt, p.t_visc));
-    const double nn = dot3(n, n);
-    double axn = 0.0, axl = 0.0;
-    if (!bad) { axn = dot3(pa.axis, n); axl = dot3(pa.axis, pa.axis); }
-    const int axis_ok = pa.b >= (1.0 - 1e-6) * a || (fabs(axl - 1.0) < 1e-6 && fabs(axn) < 0.99);
-    const int dom = !bad && !corrupt && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
-                    (p.twisting == 0 || p.twisting == 1) && cmd_pair_ok(&m) && pa.F_bound >= 0.0 &&
-                    (a == 0.0 ? pa.b == 0.0 : cmd_axes_ok(a, pa.b)) && fabs(nn - 1.0) <= 1e-6 &&
-                    (!p.dissipation || dt > 0.0) && axis_ok;
+    cmd_inputs in;
+    cmd_fuzz_inputs(n0, corrupt, &in);
+    const dc_cmd_params p = in.p;
+    const dc_mindlin_pair m = in.m;
+    const dc_patch pa = in.pa;
+    const double *n = in.n, *du = in.du, dphi = in.dphi, dt = in.dt, a = pa.a;
+    const int bad = in.bad, dom = in.dom;
     const dc_cmd_state h0 = h;
     dc_cmd_out o;
     SENTINEL(o);
@@ -2215,43 +2242,13 @@ static void fuzz_cmdtp(void)
       hv[UI(DC_CMDTP_HISTORY_NFIELDS)] = fz_wild();
       corrupt = 1;
     }
-    dc_cmd_params p = {A(U() < 0.9 ? U() : 0.0), A(U() < 0.7 ? fz_log(1e-9, 1e-3) : 0.0), AI(U() < 0.5), AI(U() < 0.5)};
-    const dc_mindlin_pair m0 = cmd_pair();
-    const dc_mindlin_pair m = {A(m0.s0), A(m0.s1)};
-    double n[3];
-    if (U() < 0.05) unit_vector(n0);
-    else {
-      for (int i = 0; i < 3; i++) n0[i] += 0.01 * (U() - 0.5);
-      const double l = sqrt(dot3(n0, n0));
-      for (int i = 0; i < 3; i++) n0[i] /= l;
-    }
-    for (int i = 0; i < 3; i++) n[i] = A(n0[i]);
-    dc_patch pa;
-    const double a = A(U() < 0.6 ? fz_log(1e-7, 1e-3) : U() < 0.1 ? 0.0 : fz_pos());
-    pa.a = a;
-    pa.b = A(U() < 0.3 ? a : a * (U() < 0.7 ? 0.05 + 0.95 * U() : fz_log(1e-160, 1.0)));
-    double ax[3];
-    unit_vector(ax);
-    for (int i = 0; i < 3; i++) pa.axis[i] = A(U() < 0.05 ? 0.0 : ax[i]);
-    pa.F_bound = A(U() < 0.05 ? 0.0 : U() < 0.7 ? fz_log(1e-6, 1e3) : fz_pos());
-    pa.F_elastic = pa.F_bound;
-    pa.formed = A(U() < 0.02 ? 0.0 : 1.0);
-    const double scale = 1.5 * p.mu * pa.F_bound * m.s0 / (8.0 * a + 1e-300);
-    double du[3];
-    for (int i = 0; i < 3; i++) du[i] = A(U() < 0.7 ? scale * fz_sign(fz_log(1e-6, 1e2)) : U() < 0.1 ? 0.0 : fz_wide());
-    const double dphi = A(U() < 0.7 ? scale / (a + 1e-300) * fz_sign(fz_log(1e-6, 1e2)) : fz_wide());
-    const double dt = A(U() < 0.8 ? fz_log(1e-8, 1e-3) : PICK(0.0, -1e-6));
-    const int bad = !ALLFIN(p.mu, a, pa.b, pa.axis[0], pa.axis[1], pa.axis[2], pa.F_bound, pa.formed, n[0], n[1], n[2],
-                            du[0], du[1], du[2], m.s0, m.s1) ||
-                    (p.twisting && !isfinite(dphi)) || (p.dissipation && !ALLFIN(dt, p.t_visc));
-    const double nn = dot3(n, n);
-    double axn = 0.0, axl = 0.0;
-    if (!bad) { axn = dot3(pa.axis, n); axl = dot3(pa.axis, pa.axis); }
-    const int axis_ok = pa.b >= (1.0 - 1e-6) * a || (fabs(axl - 1.0) < 1e-6 && fabs(axn) < 0.99);
-    const int dom = !bad && !corrupt && p.mu >= 0.0 && p.t_visc >= 0.0 && (p.dissipation == 0 || p.dissipation == 1) &&
-                    (p.twisting == 0 || p.twisting == 1) && cmd_pair_ok(&m) && pa.F_bound >= 0.0 &&
-                    (a == 0.0 ? pa.b == 0.0 : cmd_axes_ok(a, pa.b)) && fabs(nn - 1.0) <= 1e-6 &&
-                    (!p.dissipation || dt > 0.0) && axis_ok;
+    cmd_inputs in;
+    cmd_fuzz_inputs(n0, corrupt, &in);
+    const dc_cmd_params p = in.p;
+    const dc_mindlin_pair m = in.m;
+    const dc_patch pa = in.pa;
+    const double *n = in.n, *du = in.du, dphi = in.dphi, dt = in.dt, a = pa.a;
+    const int bad = in.bad, dom = in.dom;
     const dc_cmdtp_state h0 = h;
     dc_cmd_out o;
     SENTINEL(o);
