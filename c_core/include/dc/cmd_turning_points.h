@@ -27,8 +27,8 @@
    a smaller S clips the slipping annulus: the force falls by
    (S_prev - S)(1 - theta) along its branch, and turning points outside
    the new limit are drawn onto it; a larger S leaves the force (the
-   annulus sticks). Either way theta is then taken from the force (one
-   cube root). This is where the law is approximate (the exact profile
+   annulus sticks). Either way theta is then taken from the force (a
+   cube root: Newton steps from the previous step's theta^2). This is where the law is approximate (the exact profile
    keeps the annulus' shape; here the branch is a Mindlin-Deresiewicz
    branch again at once); the measured differences are in
    doc/cmd_tangential.md.
@@ -40,6 +40,8 @@
    exact law) splits into its part along the branch's excess X = F - A,
    which drives the branch (a negative part is a reversal), and the rest,
    which turns X with the stiffness of the stuck core, k theta. |F| <= S.
+   A subnormal force or displacement has too few bits for a direction: the
+   first starts a fresh branch, the second counts as none.
 
    Twisting (flag): the same law for the moment about n, with Mindlin's
    torsional stiffness and the full-slip moment of dc/cmd_tangential.h.
