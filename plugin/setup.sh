@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs what the project needs (Debian packages, the LIGGGHTS source) and
-# builds c_core, the tools and a LIGGGHTS executable with the plugin models
-# into build/. Re-running reuses build/ and ccache: only what changed rebuilds.
+# Installs what the project needs (Debian packages, the LIGGGHTS and LAMMPS
+# sources) and builds c_core, the tools, a LIGGGHTS executable with the
+# plugin models (plugin/liggghts) into build/ and a LAMMPS executable with
+# the project's sub-models (plugin/lammps) into build/lammps/. Re-running
+# reuses build/ and ccache: only what changed rebuilds.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
@@ -23,7 +25,7 @@ if [ -n "$missing" ]; then
   apt-get install -y -q $missing >/dev/null
 fi
 
-"$root/plugin/fetch_liggghts.sh" "$root/.deps/liggghts-3.8.0"
+"$root/plugin/liggghts/fetch_liggghts.sh" "$root/.deps/liggghts-3.8.0"
 
 mkdir -p "$root/build"
 # DC_DECKS: the user's decks (space-separated paths) whose contact-model
@@ -48,3 +50,4 @@ if ! cmake --build "$root/build" -j"$(nproc)" >"$root/build/build.log" 2>&1; the
   exit 1
 fi
 echo "setup: built $root/build/bin/liggghts and $root/build/c_core/dclaw"
+"$root/plugin/lammps/build.sh"

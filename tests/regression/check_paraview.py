@@ -22,7 +22,7 @@ the dumps, and reads every written file back with VTK's own XML reader
 - --surfaces: every surface point lies on its particle's surface
   (superquadrics |f| < 1e-9, spheres |r - R| < 1e-12 R);
 - a dump local without --log or --compute is refused with exit code 2;
-- this build's `dump custom/vtk` (plugin/io), legacy .vtk and XML .vtp, on
+- this build's `dump custom/vtk` (plugin/liggghts/io), legacy .vtk and XML .vtp, on
   1 and 2 ranks: the same points and arrays as the converter's particle
   files (without the glyph tensor), bit for bit.
 Usage: check_paraview.py WORKDIR"""

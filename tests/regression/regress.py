@@ -72,10 +72,10 @@ def run(deck, workdir, ranks=1, variables=None, tag="run", expect_error=False, c
         print(p.stdout[-3000:])
         print(log[-3000:])
         raise SystemExit("FAIL %s: LIGGGHTS exited with %d (%s)" % (deck, p.returncode, " ".join(cmd)))
-    # every model combination a deck uses is compiled (plugin/gen_whitelist.py)
+    # every model combination a deck uses is compiled (plugin/liggghts/gen_whitelist.py)
     if compiled and "not compiled for speed" in p.stdout + log:
         raise SystemExit("FAIL %s: a contact-model combination of this deck is not compiled: "
-                         "plugin/gen_whitelist.py missed it (%s)" % (deck, " ".join(cmd)))
+                         "plugin/liggghts/gen_whitelist.py missed it (%s)" % (deck, " ".join(cmd)))
     return log
 
 

@@ -9,7 +9,7 @@ sub-models on and off by a variable); and, as LIGGGHTS' own build does,
 the lines of LIGGGHTS' example decks (examples/LIGGGHTS beside its src/,
 skipping lines with a model from a variable or from a package this build
 lacks) and of the user's decks (DECK arguments, from DC_DECKS at set-up).
-Run by plugin/CMakeLists.txt at configure time.
+Run by plugin/liggghts/CMakeLists.txt at configure time.
 A project or user deck line naming an unknown model is an error (exit 2).
 Usage: gen_whitelist.py PROJECT_ROOT LIGGGHTS_SRC OUTPUT [DECK ...]"""
 import glob
@@ -24,11 +24,11 @@ KINDS = {"model": "NORMAL", "tangential": "TANGENTIAL", "cohesion": "COHESION", 
 # keyword -> enum name of every model LIGGGHTS and the plugin define
 enums = {}
 for path in glob.glob(os.path.join(LIGG_SRC, "*_model_*.h")) + \
-        glob.glob(os.path.join(ROOT, "plugin", "models", "*_model_*.h")):
+        glob.glob(os.path.join(ROOT, "plugin", "liggghts", "models", "*_model_*.h")):
     for kind, enum, name in re.findall(r"^(\w+)_MODEL\((\w+),\s*([\w/]+),", open(path).read(), re.M):
         enums[(kind, name)] = enum
 if ("NORMAL", "hertz_elliptic") not in enums or ("TANGENTIAL", "history") not in enums:
-    sys.exit("gen_whitelist: no model headers found in %s and plugin/models" % LIGG_SRC)
+    sys.exit("gen_whitelist: no model headers found in %s and plugin/liggghts/models" % LIGG_SRC)
 
 
 def combination(words, where, strict=True):

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fetches the LIGGGHTS 3.8.0 upstream source from Debian's `liggghts` source
 # package (tarball only: the Debian patch archive may not be served) and
-# applies plugin/patches/*.patch. Usage: plugin/fetch_liggghts.sh DEST
+# applies plugin/liggghts/patches/*.patch. Usage: plugin/liggghts/fetch_liggghts.sh DEST
 # Leaves DEST/src ready; does nothing when DEST already holds this patch set.
 set -euo pipefail
 dest=$1

@@ -1,0 +1,128 @@
+/* Plumbing shared by the project's LAMMPS GRANULAR sub-models (the
+   gran_sub_mod_dc_*.h files beside it): the normal sub-model base that
+   hands the contact patch (dc/contract.h) to the other sub-models of the
+   same contact, coefficient range checks reported as LAMMPS errors, and the
+   history swap factors from a law's history table. No physics here: the
+   laws are c_core's (c_core/include/dc/). */
+#ifndef LMP_DC_SUB_MOD_H
+#define LMP_DC_SUB_MOD_H
+
+#include <cmath>
+#include <string>
+
+#include "dc/contract.h"
+#include "dc/status.h"
+#include "error.h"
+#include "gran_sub_mod_normal.h"
+#include "granular_model.h"
+
+namespace LAMMPS_NS {
+namespace Granular_NS {
+
+/* Base of the project's normal sub-models. Each law fills F_, S_ and,
+   when a sub-model asked for it (want_patch), patch_ in evaluate(), which
+   runs once per contact and step from calculate_contact_radius (LAMMPS
+   calls it before every other sub-model; contact_radius_flag is always
+   set). LAMMPS' own tangential, rolling and twisting models see the
+   contact radius (a b)^1/2, the radius of the circle of the patch's area,
+   and Fncrit: |F_n + F_damp| for non-adhesive laws (as LAMMPS' hertz), the
+   patch's friction load F_bound for adhesive ones (as LAMMPS' jkr). */
+class GranSubModDcNormal : public GranSubModNormal {
+ public:
+  GranSubModDcNormal(class GranularModel *gm, class LAMMPS *lmp) : GranSubModNormal(gm, lmp)
+  {
+    material_properties = 1;
+    contact_radius_flag = 1;
+  }
+
+  double calculate_contact_radius() override
+  {
+    evaluate();
+    return radius_;
+  }
+  double calculate_forces() override { return F_; }
+  void set_fncrit() override { Fncrit = cohesive_flag ? patch_.F_bound : std::fabs(gm->Fntot); }
+
+  /* Called by a reader's init(): from then on the patch is filled. */
+  void want_patch() { patch_wanted_ = true; }
+  const dc_patch &patch() const { return patch_; }
+  /* Tangent stiffness dF/d delta [N/m] of this step (damping acts on it). */
+  double stiffness() const { return S_; }
+  /* E* [Pa] and G* [Pa] of the contact (pair or wall). */
+  double estar() const { return Estar_; }
+  double gstar() const { return Gstar_; }
+
+ protected:
+  virtual void evaluate() = 0;
+
+  /* E* and G* from coeffs E, nu (pair: both bodies of that material; wall:
+     a rigid-free wall of the same material, as LAMMPS' hertz/material). */
+  void material_from(double E, double nu)
+  {
+    Emod = E;
+    poiss = nu;
+    if (mixed_) return;
+    if (gm->contact_type == PAIR) {
+      Estar_ = mix_stiffnessE(E, E, nu, nu);
+      Gstar_ = mix_stiffnessG(E, E, nu, nu);
+    } else {
+      Estar_ = mix_stiffnessE_wall(E, nu);
+      Gstar_ = mix_stiffnessG_wall(E, nu);
+    }
+  }
+  /* For mix_coeffs of a pair of types: E* and G* of two materials. */
+  void mix_material(double E1, double nu1, double E2, double nu2)
+  {
+    Estar_ = mix_stiffnessE(E1, E2, nu1, nu2);
+    Gstar_ = mix_stiffnessG(E1, E2, nu1, nu2);
+    mixed_ = true;
+  }
+
+  /* dc_check_coeff with this sub-model's name. */
+  void check_coeff(const char *coeff, double value, double lo, int lo_open, double hi, int hi_open,
+                   const char *range);
+
+  double F_ = 0.0, S_ = 0.0, radius_ = 0.0;
+  double Estar_ = 0.0, Gstar_ = 0.0;
+  dc_patch patch_ = {};
+  bool patch_wanted_ = false, mixed_ = false;
+};
+
+/* The project's normal sub-model of this contact, or nullptr (a LAMMPS
+   normal model). */
+inline GranSubModDcNormal *dc_normal(GranularModel *gm)
+{
+  return dynamic_cast<GranSubModDcNormal *>(gm->normal_model);
+}
+
+/* A sub-model's history swap factors from a law's table (dc/contract.h):
+   -1 where the value changes sign when i and j swap, +1 elsewhere. */
+inline void dc_history_transfer(GranSubMod *m, const dc_history_field *table, int n)
+{
+  m->size_history = n;
+  m->nondefault_history_transfer = 1;
+  delete[] m->transfer_history_factor;
+  m->transfer_history_factor = new double[n];
+  for (int k = 0; k < n; k++) m->transfer_history_factor[k] = table[k].flips ? -1.0 : 1.0;
+}
+
+/* lo <= value <= hi (open ends as flagged) or a LAMMPS error naming the
+   sub-model, the coefficient, its value and its range. */
+inline void dc_check_coeff(Error *error, const std::string &model, const char *coeff, double value, double lo,
+                           int lo_open, double hi, int hi_open, const char *range)
+{
+  dc_param_error err;
+  if (dc_param_check(coeff, value, lo, lo_open, hi, hi_open, range, &err) != DC_OK)
+    error->all(FLERR, "{} coefficient {} = {} is outside {}", model, coeff, value, range);
+}
+
+inline void GranSubModDcNormal::check_coeff(const char *coeff, double value, double lo, int lo_open, double hi,
+                                             int hi_open, const char *range)
+{
+  dc_check_coeff(error, name, coeff, value, lo, lo_open, hi, hi_open, range);
+}
+
+}    // namespace Granular_NS
+}    // namespace LAMMPS_NS
+
+#endif
