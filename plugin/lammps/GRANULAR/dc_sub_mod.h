@@ -95,6 +95,24 @@ inline GranSubModDcNormal *dc_normal(GranularModel *gm)
   return dynamic_cast<GranSubModDcNormal *>(gm->normal_model);
 }
 
+/* The relative tangential velocity of the surfaces at the contact point,
+   with the lever arms to the contact point, radius - delta/2 (a wall: the
+   sphere's), as LIGGGHTS' and the project's LIGGGHTS models take it and as
+   LAMMPS applies the torque of a pair; LAMMPS' own sub-models take the
+   radii (gm->vtr). */
+inline void dc_contact_point_velocity(const GranularModel *gm, double vtr[3])
+{
+  const double *n = gm->nx, h = 0.5 * gm->delta;
+  double w[3];
+  if (gm->contact_type == PAIR)
+    for (int k = 0; k < 3; k++) w[k] = (gm->radi - h) * gm->omegai[k] + (gm->radj - h) * gm->omegaj[k];
+  else
+    for (int k = 0; k < 3; k++) w[k] = (gm->radi - h) * gm->omegai[k];
+  vtr[0] = gm->vt[0] - (w[1] * n[2] - w[2] * n[1]);
+  vtr[1] = gm->vt[1] - (w[2] * n[0] - w[0] * n[2]);
+  vtr[2] = gm->vt[2] - (w[0] * n[1] - w[1] * n[0]);
+}
+
 /* A sub-model's history swap factors from a law's table (dc/contract.h):
    -1 where the value changes sign when i and j swap, +1 elsewhere. */
 inline void dc_history_transfer(GranSubMod *m, const dc_history_field *table, int n)
