@@ -113,6 +113,22 @@ inline void dc_contact_point_velocity(const GranularModel *gm, double vtr[3])
   vtr[2] = gm->vt[2] - (w[0] * n[1] - w[1] * n[0]);
 }
 
+/* A rolling sub-model that owns the tangential force while the contact
+   rolls (dc/kalker; LIGGGHTS: rolling_contact.h): the project's tangential
+   sub-models ask it every step, before it runs, and while rolls() is true
+   apply nothing and start their history afresh. */
+class GranSubModDcHandover {
+ public:
+  virtual ~GranSubModDcHandover() = default;
+  /* Whether this contact rolls at this step (it then applies the force). */
+  virtual bool rolls() = 0;
+};
+
+inline GranSubModDcHandover *dc_handover(GranularModel *gm)
+{
+  return dynamic_cast<GranSubModDcHandover *>(gm->rolling_model);
+}
+
 /* A sub-model's history swap factors from a law's table (dc/contract.h):
    -1 where the value changes sign when i and j swap, +1 elsewhere. */
 inline void dc_history_transfer(GranSubMod *m, const dc_history_field *table, int n)
