@@ -3,7 +3,7 @@
 # GRANULAR sub-models (plugin/lammps/GRANULAR) and c_core into build/lammps
 # (executable build/lammps/lmp). Fetches the source first
 # (plugin/lammps/fetch_lammps.sh). ccache keeps rebuilds short: the first
-# build compiles about 400 LAMMPS files (15-20 minutes on 2 cores), a rebuild
+# build compiles about 420 files (5 minutes on 2 idle cores, more on busy ones), a rebuild
 # with a warm cache takes about a minute. Called by plugin/setup.sh.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -29,7 +29,7 @@ cmake -S "$src/cmake" -B "$out" -DCMAKE_BUILD_TYPE=Release -DBUILD_MPI=yes -DBUI
       -DDC_ROOT="$root" -DCMAKE_PROJECT_lammps_INCLUDE="$root/plugin/lammps/dc_lammps.cmake" \
       -DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache >"$out/configure.log" 2>&1 \
   || { cat "$out/configure.log"; exit 1; }
-echo "setup: building LAMMPS with the project's sub-models (first build 15-20 minutes on 2 cores; log in build/lammps/build.log)"
+echo "setup: building LAMMPS with the project's sub-models (the first build takes about 5 minutes on 2 idle cores; log in build/lammps/build.log)"
 if ! cmake --build "$out" -j"$(nproc)" --target lmp >"$out/build.log" 2>&1; then
   grep -E "error|Error" "$out/build.log" | head -40
   echo "setup: LAMMPS build failed, see build/lammps/build.log" >&2

@@ -4,18 +4,21 @@
 # head-on (in.liggghts, in.lammps), no damping, several impact speeds
 # around the critical sticking speed; then one restitution-damped case.
 # Prints the comparison table (doc/peers.md explains it).
-# Not part of the test suite: LAMMPS is not a project dependency. Without
-# an 'lmp' on PATH (Debian: apt-get install lammps) the LAMMPS columns are
-# skipped. Usage: run.sh [WORKDIR]   (default: a temporary folder)
-# Env: DC_LIGGGHTS (default build/bin/liggghts), LMP (default lmp).
+# Not part of the test suite (tests/engines holds the checks of the two
+# engines). LAMMPS: the project's build (build/lammps/lmp, plugin/setup.sh)
+# or LMP; without either the LAMMPS columns are skipped.
+# Usage: run.sh [WORKDIR]   (default: a temporary folder)
+# Env: DC_LIGGGHTS (default build/bin/liggghts), LMP (default build/lammps/lmp, else lmp).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../../.." && pwd)
 export DC_LIGGGHTS=${DC_LIGGGHTS:-$root/build/bin/liggghts}
-export LMP=${LMP:-lmp}
+default_lmp=lmp
+[ -x "$root/build/lammps/lmp" ] && default_lmp=$root/build/lammps/lmp
+export LMP=${LMP:-$default_lmp}
 [ -x "$DC_LIGGGHTS" ] || { echo "run.sh: no LIGGGHTS at $DC_LIGGGHTS (run plugin/setup.sh)" >&2; exit 1; }
 if ! command -v "$LMP" >/dev/null 2>&1; then
-  echo "run.sh: '$LMP' not found: LAMMPS not installed, its columns are skipped (Debian: apt-get install lammps)"
+  echo "run.sh: '$LMP' not found: LAMMPS not built (plugin/setup.sh), its columns are skipped"
   export LMP=""
 fi
 work=${1:-$(mktemp -d)}
