@@ -14,6 +14,7 @@
 #include "dc/status.h"
 #include "error.h"
 #include "gran_sub_mod_normal.h"
+#include "gran_sub_mod_rolling.h"
 #include "granular_model.h"
 
 namespace LAMMPS_NS {
@@ -119,7 +120,7 @@ inline void dc_contact_point_velocity(const GranularModel *gm, double vtr[3])
    apply nothing and start their history afresh. */
 class GranSubModDcHandover {
  public:
-  virtual ~GranSubModDcHandover() = default;
+  virtual ~GranSubModDcHandover() noexcept(false) = default;    // as LAMMPS' Pointers
   /* Whether this contact rolls at this step (it then applies the force). */
   virtual bool rolls() = 0;
 };
