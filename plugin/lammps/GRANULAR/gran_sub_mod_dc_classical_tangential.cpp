@@ -70,8 +70,17 @@ void GranSubModTangentialDcClassical::init()
   if (law_ != DC_CT_LANGSTON) p.eta_l = 0.0;
   if (law_ != DC_CT_ZHENG) p.t_visc = 0.0;
   dc_param_error err;
-  if (dc_classical_tangential_init(&p, &model_, &err) != DC_OK)
-    error->all(FLERR, "{} coefficient {} = {} is outside {}", name, err.name, err.value, err.range);
+  if (dc_classical_tangential_init(&p, &model_, &err) != DC_OK) {
+    /* the coefficient's name here, c_core's (the LIGGGHTS property) beside it */
+    static const char *const map[][2] = {{"coefficientFriction", "mu"}, {"kt", "kt"}, {"gammat", "gammat"},
+                                         {"coefficientRestitutionTangential", "e_t"},
+                                         {"langstonDamping", "eta_l"},
+                                         {"tangentialViscoelasticTime", "t_visc"}};
+    const char *which = "of the normal sub-model (E, nu)";
+    for (const auto &m : map)
+      if (std::strcmp(err.name, m[0]) == 0) which = m[1];
+    error->all(FLERR, "{} coefficient {} ({}) = {} is outside {}", name, which, err.name, err.value, err.range);
+  }
 }
 
 void GranSubModTangentialDcClassical::calculate_forces()

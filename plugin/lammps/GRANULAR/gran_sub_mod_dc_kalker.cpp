@@ -9,6 +9,7 @@
 #include "update.h"
 
 #include <cstring>
+#include <string>
 
 using namespace LAMMPS_NS;
 using namespace Granular_NS;
@@ -36,7 +37,14 @@ void GranSubModRollingDcKalker::coeffs_to_local()
                coeffs[1]);
   dc_param_error err;
   if (dc_rolling_check(&params_, &err) != DC_OK)
-    error->all(FLERR, "{} coefficient {} = {} is outside {}", name, err.name, err.value, err.range);
+  {
+    /* the coefficient's name here, c_core's (the LIGGGHTS setting) beside it */
+    const std::string which = std::string(err.name) == "coefficientFriction" ? "mu"
+        : std::string(err.name) == "rollingVelocityMin"                      ? "vmin"
+        : std::string(err.name) == "rollingDistanceMin"                      ? "dmin"
+                                                                             : "creep";
+    error->all(FLERR, "{} coefficient {} ({}) = {} is outside {}", name, which, err.name, err.value, err.range);
+  }
   if (params_.roll_min > 0.0)
     dc_history_transfer(this, rolled_history, 3);
   else
