@@ -118,9 +118,8 @@ bool GranSubModRollingDcKalker::rolls()
   cj.k1 = cj.k2 = kj;
   const int st = dc_rolling_kinematics_capped(n, &ci, &cj, dv, dw, INFINITY, &kin_);
   if (st != DC_OK)
-    error->one(FLERR, "{}: contact of atom {}: rolling kinematics: {} (relative velocity {} {} {} m/s, relative "
-               "spin {} {} {} 1/s)", name, wall ? -1 : (int) atom->tag[gm->i], dc_status_str(st), dv[0], dv[1],
-               dv[2], dw[0], dw[1], dw[2]);
+    error->one(FLERR, "{}: {} contact: rolling kinematics: {} (relative velocity {} {} {} m/s, relative spin {} {} "
+               "{} 1/s)", name, wall ? "wall" : "pair", dc_status_str(st), dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
   dc_rolling_params prm = params_;
   prm.mu = 0.0;
   acts_ = dc_rolling_acts_rolled(&prm, &normal_->patch(), &kin_, update->dt, rolled) != 0;
