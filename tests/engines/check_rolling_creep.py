@@ -99,6 +99,7 @@ for v, msg in (({"creep": 2}, "dc/kalker coefficient creep = 2 is outside {0, 1}
                ({"vmin": 0}, "dc/kalker coefficient vmin (rollingVelocityMin) = 0 is outside (0, inf)"),
                ({"dmin": -1}, "dc/kalker coefficient dmin (rollingDistanceMin) = -1 is outside [0, inf)"),
                ({"tangential": "mindlin NULL 1.0 0.5"}, "dc/kalker needs a tangential sub-model that hands"),
+               ({"normal": "hertz/material", "damping": "tsuji"}, "needs one of the project's normal sub-models"),
                ({"steps": 1, "tangential": "dc/classical 3 2 0 -0.5 0 0 0 0 0"},
                 "dc/classical coefficient mu (coefficientFriction) = -0.5 is outside")):
     rc, text = engines.run("lammps", "rolling_creep/in.lammps", work, variables=dict(var, **v), tag="error",
