@@ -36,8 +36,7 @@ void GranSubModRollingDcKalker::coeffs_to_local()
     error->all(FLERR, "{} coefficient creep = {} is outside {{0, 1}} (0 kalker, 1 vermeulenJohnson)", name,
                coeffs[1]);
   dc_param_error err;
-  if (dc_rolling_check(&params_, &err) != DC_OK)
-  {
+  if (dc_rolling_check(&params_, &err) != DC_OK) {
     /* the coefficient's name here, c_core's (the LIGGGHTS setting) beside it */
     const std::string which = std::string(err.name) == "coefficientFriction" ? "mu"
         : std::string(err.name) == "rollingVelocityMin"                      ? "vmin"
