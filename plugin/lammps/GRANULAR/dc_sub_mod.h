@@ -120,7 +120,7 @@ inline void dc_contact_point_velocity(const GranularModel *gm, double vtr[3])
    apply nothing and start their history afresh. */
 class GranSubModDcHandover {
  public:
-  virtual ~GranSubModDcHandover() = default;
+  virtual ~GranSubModDcHandover() noexcept(false) = default;    // as LAMMPS' Pointers
   /* Whether this contact rolls at this step (it then applies the force). */
   virtual bool rolls() = 0;
 };
