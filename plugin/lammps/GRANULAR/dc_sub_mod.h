@@ -14,6 +14,7 @@
 #include "dc/status.h"
 #include "error.h"
 #include "gran_sub_mod_normal.h"
+#include "gran_sub_mod_rolling.h"
 #include "granular_model.h"
 
 namespace LAMMPS_NS {
