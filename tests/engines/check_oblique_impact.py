@@ -64,8 +64,9 @@ for v, want in [({"memory": 2}, "dc/cmd_tangential coefficient memory = 2 is out
                 ({"mu": -0.1}, "dc/cmd_tangential coefficient mu = -0.1 is outside [0, inf)"),
                 ({"tvisc": -1e-6}, "dc/cmd_tangential coefficient t_visc = -1e-06 is outside [0, inf) s"),
                 ({"rough": 1}, "dc/cmd_tangential coefficient rough = 1 (tangentialRoughness) needs a normal"),
-                ({"tang": "mindlin"}, "dc/cmd_twisting needs tangential dc/cmd_tangential, not mindlin")]:
+                ({"tang": "mindlin"}, "dc/cmd_twisting needs tangential dc/cmd_tangential, not mindlin"),
+                ({"twist": "twisting marshall"}, "dc/cmd_tangential with twisting marshall: marshall reads a linear")]:
     rc, text = engines.run("lammps", "oblique_impact/in.lammps", work, variables=v, expect_error=True,
-                           tag="error_%s" % list(v)[0])
+                           tag="error_%s" % "_".join(str(x) for x in v))
     c.true(rc != 0 and want in text, "error %s: %s" % (v, "found" if want in text else text[-400:]))
 c.finish()

@@ -86,6 +86,9 @@ void GranSubModTangentialDcCmd::init()
   if (dc_mindlin_pair_init(E, nu, E, nu, &pair_) != DC_OK)
     error->all(FLERR, "{}: the normal model's E = {} and nu = {} give no Mindlin stiffness (need E > 0, nu in "
                "(-1, 0.5])", name, E, nu);
+  if (gm->twisting_model->name == "marshall")
+    error->all(FLERR, "{} with twisting marshall: marshall reads a linear tangential stiffness, which this law has "
+               "not; use twisting dc/cmd_twisting", name);
   twist_ = dynamic_cast<GranSubModTwistingDcCmd *>(gm->twisting_model);
   params_.twisting = twist_ ? 1 : 0;
 }
