@@ -2,7 +2,7 @@
 engines: a sphere pair (sliding, spinning: the contact sticks, slips and
 twists) and a sphere onto the plane z = 0. LIGGGHTS hertz_elliptic +
 cmd_tangential (cmdMemory profile | turningPoints, cmdTwisting on,
-cmdDissipation) against LAMMPS dc/hertz_elliptic + dc/cmd_tangential +
+cmdDissipation, two materials) against LAMMPS dc/hertz_elliptic + dc/cmd_tangential +
 dc/cmd_twisting, every column of every step within 1e-10; LIGGGHTS' stock
 hertz against LAMMPS' hertz/material under the same tangential law; the
 wall sphere turning (LAMMPS' wall torque lever arm is the radius, LIGGGHTS'
@@ -38,6 +38,11 @@ both("profile_dissipation", {"memory": "profile", "diss": "on", "tvisc": 2e-6}, 
      what="cmdDissipation on (t_visc 2e-6 s): LAMMPS against LIGGGHTS")
 both("turningPoints_notwist", {"memory": "turningPoints", "twist": "off"}, {"memory": 1, "twist": "twisting none"},
      what="turningPoints, no twisting: LAMMPS against LIGGGHTS")
+
+# atom 2 of another material: LAMMPS mixes the pair 1-2 (E* and G* of the
+# two materials in dc/hertz_elliptic, Mindlin's compliances from them)
+both("mixed", {"E2": 2e7, "nu2": 0.2}, {"mixed": 1, "E2": 2e7, "nu2": 0.2},
+     what="two materials (E 5e6 and 2e7, nu 0.3 and 0.2), LAMMPS' mixing: LAMMPS against LIGGGHTS")
 
 # stock normal models: LIGGGHTS hertz, LAMMPS hertz/material (undamped),
 # the circular patch of radius (R delta)^1/2 in both

@@ -24,8 +24,9 @@
    normal model the circle a = (R delta)^1/2, R the effective radius, with
    friction load its elastic force (not with a cohesive LAMMPS normal
    model). Mindlin's stiffness from the normal model's E and nu (both
-   bodies of that material; a mixed type pair: the mixed E and nu, as
-   LAMMPS' mindlin). The damping sub-model does not act on the tangential
+   bodies of that material); for a mixed type pair from the project's
+   normal sub-model's E* and G* of the two materials (under a LAMMPS
+   normal model: its mixed E and nu, as LAMMPS' mindlin). The damping sub-model does not act on the tangential
    force: the law's dissipation is its own (slip, t_visc). With a rolling
    sub-model that takes the tangential force over (dc_handover) nothing
    is applied while the contact rolls and the history starts afresh. */
@@ -63,6 +64,7 @@ class GranSubModTangentialDcCmd : public GranSubModTangential {
   dc_cmd_params params_ = {};
   dc_mindlin_pair pair_ = {};
   int memory_ = 0;
+  bool mixed_ = false;
   double Mt_ = 0.0;
   GranSubModTwistingDcCmd *twist_ = nullptr;
 };
