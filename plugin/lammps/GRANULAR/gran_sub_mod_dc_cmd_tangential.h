@@ -29,7 +29,10 @@
    normal model: its mixed E and nu, as LAMMPS' mindlin). The damping sub-model does not act on the tangential
    force: the law's dissipation is its own (slip, t_visc). With a rolling
    sub-model that takes the tangential force over (dc_handover) nothing
-   is applied while the contact rolls and the history starts afresh. */
+   is applied while the contact rolls and the history starts afresh. At a
+   run's set-up (history_update 0) the law steps on a copy of the history,
+   as the LIGGGHTS wrapper does: the set-up force holds one more step's
+   increment, so two runs differ slightly from one (a restart does not). */
 #ifdef GRAN_SUB_MOD_CLASS
 // clang-format off
 GranSubModStyle(dc/cmd_tangential,GranSubModTangentialDcCmd,TANGENTIAL);
