@@ -1,8 +1,6 @@
 /* dc/classical (gran_sub_mod_dc_classical_normal.h). */
 #include "gran_sub_mod_dc_classical_normal.h"
 
-#include "gran_sub_mod_damping.h"
-
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -86,8 +84,28 @@ void GranSubModNormalDcClassical::mix_coeffs(double *icoeffs, double *jcoeffs)
 void GranSubModNormalDcClassical::init()
 {
   GranSubModDcNormal::init();
-  if (!dynamic_cast<GranSubModDampingNone *>(gm->damping_model))
-    error->all(FLERR, "{} carries the law's own dashpot: use damping none, not {}", name, gm->damping_model->name);
+  if (!dynamic_cast<GranSubModDampingDcClassical *>(gm->damping_model))
+    error->all(FLERR, "{} carries the law's own dashpot: use damping dc/classical, not {}", name,
+               gm->damping_model->name);
+}
+
+GranSubModDampingDcClassical::GranSubModDampingDcClassical(GranularModel *gm, LAMMPS *lmp) :
+    GranSubModDamping(gm, lmp)
+{
+}
+
+void GranSubModDampingDcClassical::init()
+{
+  GranSubModDamping::init();
+  normal = dynamic_cast<GranSubModNormalDcClassical *>(gm->normal_model);
+  if (!normal) error->all(FLERR, "Damping {} is the dashpot of normal dc/classical, not of {}", name, gm->normal_model->name);
+}
+
+/* Nothing: dc/classical's force holds the dashpot. */
+double GranSubModDampingDcClassical::calculate_forces()
+{
+  damp_prefactor = normal->gamma();
+  return 0.0;
 }
 
 /* The LIGGGHTS model's surfacesIntersect: the total force (elastic and
@@ -104,6 +122,7 @@ void GranSubModNormalDcClassical::evaluate()
   if (gm->history_update) gm->history[history_index] = h.delta_max;
   F_ = out.F;
   S_ = out.c.kn;
+  gamma_ = out.gamma;
   radius_ = out.c.a;
   if (patch_wanted_) dc_patch_from_contact(&out.c, nullptr, &patch_);
 }

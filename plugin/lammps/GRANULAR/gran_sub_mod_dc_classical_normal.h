@@ -21,18 +21,22 @@
      vchar [m/s] > 0 with a matched stiffness (else unused, >= 0);
      S [1/m] >= 0: unloading stiffness slope (law 3);
      limit: 0 or 1 (LIGGGHTS limitForce: the total force clipped at 0).
-   The dashpot is the law's own (the total force comes from c_core): the
-   damping sub-model must be `none`. History: the largest overlap (hls;
+   The dashpot is the law's own (c_core gives the total force): the
+   damping sub-model must be dc/classical, which adds nothing and hands the
+   law's damping coefficient to the tangential sub-model (damp_prefactor,
+   as LIGGGHTS' tangential_damping). History: the largest overlap (hls;
    1 value, 0 for the other laws), reset when the surfaces part. */
 #ifdef GRAN_SUB_MOD_CLASS
 // clang-format off
 GranSubModStyle(dc/classical,GranSubModNormalDcClassical,NORMAL);
+GranSubModStyle(dc/classical,GranSubModDampingDcClassical,DAMPING);
 // clang-format on
 #else
 #ifndef GRAN_SUB_MOD_DC_CLASSICAL_NORMAL_H
 #define GRAN_SUB_MOD_DC_CLASSICAL_NORMAL_H
 
 #include "dc_sub_mod.h"
+#include "gran_sub_mod_damping.h"
 #include "dc/classical_normal.h"
 
 namespace LAMMPS_NS {
@@ -44,12 +48,26 @@ class GranSubModNormalDcClassical : public GranSubModDcNormal {
   void coeffs_to_local() override;
   void mix_coeffs(double *, double *) override;
   void init() override;
+  /* The law's damping coefficient [N s/m] of this step. */
+  double gamma() const { return gamma_; }
 
  protected:
   void evaluate() override;
 
  private:
   dc_classical_normal m_ = {};
+  double gamma_ = 0.0;
+};
+
+/* The damping of dc/classical: the force is in the normal model's. */
+class GranSubModDampingDcClassical : public GranSubModDamping {
+ public:
+  GranSubModDampingDcClassical(class GranularModel *, class LAMMPS *);
+  void init() override;
+  double calculate_forces() override;
+
+ private:
+  GranSubModNormalDcClassical *normal = nullptr;
 };
 
 }    // namespace Granular_NS
