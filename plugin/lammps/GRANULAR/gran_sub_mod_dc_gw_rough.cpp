@@ -13,7 +13,7 @@ using namespace Granular_NS;
 GranSubModNormalDcGwRough::GranSubModNormalDcGwRough(GranularModel *gm, LAMMPS *lmp) :
     GranSubModDcNormal(gm, lmp)
 {
-  num_coeffs = 13;
+  num_coeffs = 14;
   beyond_contact = 1;
 }
 
@@ -59,6 +59,25 @@ void GranSubModNormalDcGwRough::coeffs_to_local()
       error->all(FLERR, "{} coefficient {} = {} is outside {}", name, c, err.value, err.range);
     }
   }
+  check_coeff("w", coeffs[13], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
+  if (coeffs[13] != 0.0 && form_ != FORM_ELLIPTIC)
+    error->all(FLERR, "{} coefficient w = {} needs form 2 (the GW closed form; 0 for forms 0 and 1)", name, coeffs[13]);
+  adhesive_ = coeffs[13] != 0.0 && sigma_ != 0.0;
+  if (adhesive_) {
+    if (dc_gwa_table_check(Estar_, coeffs[13], sigma_, n_asp_, &err) != DC_OK ||
+        dc_gwa_table_pair_init(Estar_, coeffs[13], sigma_, n_asp_, &pa_) != DC_OK)
+      error->all(FLERR, "{}: {} = {} is outside {} (the adhesive summits of w, sigma, n_asp)", name, err.name,
+                 err.value, err.range);
+    // history: the summits' branch (gwa_touched, gwa_delta_max), then what the contact's radius fixes
+    dc_history_field table[DC_GWA_TABLE_HISTORY_NFIELDS + DC_GWA_TABLE_CONTACT_NFIELDS];
+    std::memcpy(table, dc_gwa_table_history, sizeof dc_gwa_table_history);
+    std::memcpy(table + DC_GWA_TABLE_HISTORY_NFIELDS, dc_gwa_table_contact_history,
+                sizeof dc_gwa_table_contact_history);
+    dc_history_transfer(this, table, DC_GWA_TABLE_HISTORY_NFIELDS + DC_GWA_TABLE_CONTACT_NFIELDS);
+  } else {
+    dc_history_transfer(this, nullptr, 0);
+  }
+  reach_R_ = 0.0;
   bound_ = dc_gw_bound();
   geom_ = dc_hertz_geom();
   if (sigma_ == 0.0) return;
@@ -84,7 +103,8 @@ void GranSubModNormalDcGwRough::mix_coeffs(double *icoeffs, double *jcoeffs)
   coeffs[1] = mix_geom(icoeffs[1], jcoeffs[1]);
   coeffs[2] = soft[2];
   coeffs[3] = dc_gw_roughness_combine(icoeffs[3], jcoeffs[3]);
-  for (int k = 4; k < 13; k++) coeffs[k] = k == 5 || k == 6 ? mix_geom(icoeffs[k], jcoeffs[k]) : soft[k];
+  for (int k = 4; k < 14; k++)
+    coeffs[k] = k == 5 || k == 6 || k == 13 ? mix_geom(icoeffs[k], jcoeffs[k]) : soft[k];
   sigma_ = coeffs[3];
   mixed_sigma_ = true;
   coeffs_to_local();
@@ -99,24 +119,47 @@ double GranSubModNormalDcGwRough::reach() const
       sigma_;
 }
 
+/* The adhesive summits' reach for radius R [m]: (D + 8) sigma once
+   touched (dc_gwa_table_reach). */
+double GranSubModNormalDcGwRough::reach_adhesive(double R)
+{
+  if (R != reach_R_) {
+    reach_adh_ = dc_gwa_table_reach(&pa_, R) * (1.0 + 1e-9);
+    reach_R_ = R;
+  }
+  return reach_adh_;
+}
+
+/* Within the rough force's reach; adhesive: within 8 sigma (untouched) or,
+   touching at the last step (gm->touch), within the summits' reach. */
 bool GranSubModNormalDcGwRough::touch()
 {
-  const double d = gm->radsum + reach();
+  double h = reach();
+  if (adhesive_) {
+    const double a = gm->touch ? reach_adhesive(gm->Reff) : DC_GWA_TABLE_X_CUT * sigma_ * (1.0 + 1e-9);
+    if (a > h) h = a;
+  }
+  const double d = gm->radsum + h;
   return gm->rsq < d * d;
 }
 
-double GranSubModNormalDcGwRough::pulloff_distance(double, double)
+double GranSubModNormalDcGwRough::pulloff_distance(double radi, double radj)
 {
-  return reach();
+  const double h = reach(), R = radi * radj / (radi + radj);
+  if (!adhesive_ || !(R > 0.0)) return h;
+  const double a = reach_adhesive(R);
+  return a > h ? a : h;
 }
 
 /* The LIGGGHTS model's roughForce on spheres. */
 void GranSubModNormalDcGwRough::evaluate()
 {
   const double reff = gm->Reff, delta = gm->delta, h = reach(), d = gm->radsum + h;
+  Fa_ = 0.0;
   if (sigma_ != 0.0 && (delta <= -h || (gm->contact_type == PAIR && gm->rsq >= d * d))) {
     F_ = S_ = radius_ = 0.0;
     patch_ = dc_patch();
+    adhesion();
     return;
   }
   dc_hertz_geom g;
@@ -156,10 +199,40 @@ void GranSubModNormalDcGwRough::evaluate()
   }
   F_ = P;
   S_ = Sn;
+  adhesion();
   if (patch_wanted_) {
     if (!(form_ == FORM_ELLIPTIC && sigma_ != 0.0)) dc_hertz_geometry(reff, reff, &g);
     dc_contact c;
     dc_gw_rough_normal(gp, Estar_, delta, P, Sn, &c);
     dc_patch_from_contact(&c, nullptr, &patch_);
   }
+}
+
+/* The adhesive summits (LIGGGHTS cohesion gw_adhesion on spheres): their
+   force Fa_ added to F_; history written only when gm->history_update. */
+void GranSubModNormalDcGwRough::adhesion()
+{
+  if (!adhesive_) return;
+  const double R = gm->Reff, delta = gm->delta;
+  double *stored = &gm->history[history_index];
+  double hist[DC_GWA_TABLE_HISTORY_NFIELDS];
+  dc_gwa_table_contact con;
+  std::memcpy(hist, stored, sizeof hist);
+  if (dc_gwa_table_apart(&pa_, delta, hist)) return;
+  std::memcpy(&con, stored + DC_GWA_TABLE_HISTORY_NFIELDS, sizeof con);
+  if (con.R != R) {
+    const int st = dc_gwa_table_contact_init(&pa_, R, &con);
+    if (st != DC_OK) error->one(FLERR, "{}: adhesive summits of radius {}: {}", name, R, dc_status_str(st));
+  }
+  dc_gwa_table_out o;
+  int st = DC_OK;
+  if (!dc_gwa_table_step_settled(&pa_, &con, delta, hist, &o)) st = dc_gwa_table_step_contact_any(&pa_, &con, delta, hist, &o);
+  if (st != DC_OK)
+    error->one(FLERR, "{}: adhesive summits at overlap {}, radius {}: {}", name, delta, R, dc_status_str(st));
+  if (gm->history_update) {
+    std::memcpy(stored, hist, sizeof hist);
+    std::memcpy(stored + DC_GWA_TABLE_HISTORY_NFIELDS, &con, sizeof con);
+  }
+  Fa_ = o.F;
+  F_ += o.F;
 }
