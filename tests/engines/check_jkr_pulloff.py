@@ -2,7 +2,7 @@
 other and into a plane, then pulled apart at constant speed. LIGGGHTS
 jkr_elliptic against LAMMPS dc/jkr_elliptic every step within 1e-10 (JKR
 undamped and with the restitution damping on the flat-punch stiffness,
-DMT); the largest tensile force against the load-controlled pull-off
+DMT, w = 0); the largest tensile force against the load-controlled pull-off
 force 3/2 pi w R (DMT: 2 pi w R), the neck holding in tension beyond touch
 and letting go; 2 ranks against 1; a bad coefficient."""
 import math
@@ -24,6 +24,14 @@ def rows(folder):
             res.append(r)
     return res
 
+
+# w 0: Hertz (no force once apart)
+dg, _ = engines.run("liggghts", "jkr_pulloff/in.liggghts", work, variables={"w": 0.0}, tag="liggghts_w0")
+dl, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"w": 0.0}, tag="lammps_w0")
+g, l = rows(dg), rows(dl)
+engines.compare(c, l, g, "w 0: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic", names=COLS)
+c.true(min(r[2] for r in l) >= 0.0 and all(r[2] == 0.0 for r in l if r[1] >= R_WALL),
+       "w 0: no tensile force, none once apart")
 
 for alaw, law, e in [("jkr", 0, 1.0), ("jkr", 0, 0.5), ("dmt", 1, 1.0)]:
     tag = "%s_e%g" % (alaw, e)
