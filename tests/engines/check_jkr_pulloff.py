@@ -58,6 +58,22 @@ for alaw, law, e in [("jkr", 0, 1.0), ("jkr", 0, 0.5), ("dmt", 1, 1.0)]:
     else:
         c.true(not beyond, "dmt: no force beyond touch")
 
+# LAMMPS' own jkr (surface energy w/2), undamped: the same force while both
+# act; it lets the neck go earlier, at its pull-off distance (JKRPREFIX),
+# where dc/jkr_elliptic follows the stable branch to delta_break
+dj, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"normal": "jkr"}, tag="lammps_jkr")
+dd, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, tag="lammps_dc_jkr")
+j, d = rows(dj), rows(dd)
+for k, what, r0 in [(2, "wall", R_WALL), (5, "pair", 2 * R_WALL)]:
+    both = [(a[k], b[k]) for a, b in zip(d, j) if a[k] != 0.0 and b[k] != 0.0]
+    worst = max(abs(a - b) / abs(a) for a, b in both)
+    c.true(worst <= 1e-12, "%s: dc/jkr_elliptic against LAMMPS jkr while both act: worst relative difference %.3g "
+           "(%d steps)" % (what, worst, len(both)))
+    last = lambda rr: max(i for i, r in enumerate(rr) if r[k] != 0.0)
+    gap = lambda r: (r[1] - R_WALL) if k == 2 else (r[4] - r[3] - r0)
+    c.true(last(j) < last(d), "%s: LAMMPS jkr lets go %.3g um apart, dc/jkr_elliptic %.3g um apart (delta_break)"
+           % (what, 1e6 * gap(j[last(j)]), 1e6 * gap(d[last(d)])))
+
 # 2 ranks (the pair on both sides of the cut at x = 0) against 1
 d2, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, ranks=2, tag="lammps_2ranks")
 d1, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, tag="lammps_1rank")
