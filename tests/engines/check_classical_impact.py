@@ -17,6 +17,10 @@ CASES = [
     ("hertz_restitution", {"claw": "hertz", "damping": "restitution"}, {"law": 1, "dlaw": 0, "damp": 0.5}),
     ("hertz_kuwabaraKono", {"claw": "hertz", "damping": "kuwabaraKono", "eta": 2e3},
      {"law": 1, "dlaw": 2, "damp": 2e3}),
+    ("hertz_viscoelastic", {"claw": "hertz", "damping": "viscoelastic", "A": 1e-7},
+     {"law": 1, "dlaw": 1, "damp": 1e-7}),
+    ("hertz_tsuji", {"claw": "hertz", "damping": "tsuji"}, {"law": 1, "dlaw": 3, "damp": 0.5}),
+    ("lsd_duration", {"claw": "lsd", "cstiff": "duration"}, {"law": 0, "stiff": 1, "damp": 0.5}),
     ("hlsConstant_overlap", {"claw": "hlsConstant", "cstiff": "overlap"}, {"law": 2, "stiff": 2, "damp": 0.5}),
     ("hlsVariable_energy", {"claw": "hlsVariable", "cstiff": "energy"}, {"law": 3, "stiff": 3, "damp": 1.0}),
 ]
