@@ -16,7 +16,7 @@
        form (gwElliptic on);
      mu in [1, 50]: Feng's mu (roughnessMu; forms 0 and 1, else unused);
      n_asp > 0: asperity count (asperityCount; form 2, else unused);
-     fitted: 0 or 1 (fengFitted: Feng's fitted formulas);
+     fitted: 0 or 1 (fengFitted: Feng's fitted formulas, form 1);
      plastic: 0 or 1 (gwPlastic, form 2: elastic-plastic summits);
      H [Pa] > 0, Kv (0: the default 0.454 + 0.41 nu), Ch, Ca: the summits'
        plasticity (hardness, plasticityKv, plasticityCh, plasticityCa of
@@ -27,7 +27,8 @@
        unloading branches in the contact history, acting from 8 sigma apart
        and, once the summits touched, until the lowest attached one lets go.
    The rough force acts before the surfaces touch (beyond_contact), from
-   delta = -6 sigma (form 0) or -3 sigma (forms 1, 2); no history. The
+   delta = -6 sigma (form 0) or -3 sigma (forms 1, 2); history only with
+   w > 0 (10 values). The
    damping sub-models act on the rough part's dF/d delta (none where it is
    negative), the tangential ones see the radius (R delta)^1/2 once
    delta > 0 and Fncrit = |F_n + F_damp| without the adhesive part (as
