@@ -55,6 +55,15 @@ int main(void)
   CHECK(dc_mindlin_pair_init(1e9, 0.6, 1e9, 0.3, &p) == DC_EDOM);
   CHECK(dc_mindlin_pair_init(0.0, 0.3, 1e9, 0.3, &p) == DC_EDOM);
   CHECK(dc_mindlin_pair_init(1e9, 0.3, 1e9, 0.3, &p) == DC_OK);
+  /* G* and E* of the pair against their textbook forms: one material,
+     G* = E / (4 (2 - nu)(1 + nu)), E* = E / (2 (1 - nu^2)); two materials
+     (E 7.5, nu 0.25 and E 2.1, nu 0.5): 1/sum (2 - nu_i)/G_i, 1/sum (1 - nu_i^2)/E_i */
+  CHECK_REL(dc_mindlin_pair_gstar(&p), 1e9 / (4.0 * 1.7 * 1.3), 1e-15, "G* of one material");
+  CHECK_REL(dc_mindlin_pair_estar(&p), 1e9 / (2.0 * 0.91), 1e-15, "E* of one material");
+  dc_mindlin_pair q;
+  CHECK(dc_mindlin_pair_init(7.5, 0.25, 2.1, 0.5, &q) == DC_OK);
+  CHECK_REL(dc_mindlin_pair_gstar(&q), 1.0 / (1.75 / 3.0 + 1.5 / 0.7), 1e-15, "G* of two materials");
+  CHECK_REL(dc_mindlin_pair_estar(&q), 1.0 / (0.9375 / 7.5 + 0.75 / 2.1), 1e-15, "E* of two materials");
   CHECK(dc_mindlin_stiffness(&p, -1.0, 1.6, 0.8, &km, &kn) == DC_EDOM && km == -1 && kn == -1);
   return check_summary("test_mindlin");
 }

@@ -35,6 +35,12 @@ typedef struct {
    when a compliance sum overflows (E_i below ~1e-308). */
 int dc_mindlin_pair_init(double E1, double nu1, double E2, double nu2, dc_mindlin_pair *p);
 
+/* G* = 1/sum (2 - nu_i)/G_i = 1/(2 s0 - s1) and E* = 1/sum (1 - nu_i^2)/E_i
+   = 2/(s0 - s1) (with (1 - nu^2)/E = (1 - nu)/(2 G)) of a material pair
+   from dc_mindlin_pair_init. Inline, unchecked. */
+static inline double dc_mindlin_pair_gstar(const dc_mindlin_pair *p) { return 1.0 / (2.0 * p->s0 - p->s1); }
+static inline double dc_mindlin_pair_estar(const dc_mindlin_pair *p) { return 2.0 / (p->s0 - p->s1); }
+
 /* No-slip stiffness of a circular contact of radius a: 8 G* a (G* =
    1/sum (2-nu_i)/G_i; LIGGGHTS' Geff). Inline, unchecked (G* > 0, a >= 0). */
 static inline double dc_mindlin_kt_circle(double Gstar, double a) { return 8. * Gstar * a; }

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "dc/contract.h"
+#include "dc/mindlin.h"
 #include "dc/status.h"
 #include "error.h"
 #include "gran_sub_mod_normal.h"
@@ -52,6 +53,8 @@ class GranSubModDcNormal : public GranSubModNormal {
   /* E* [Pa] and G* [Pa] of the contact (pair or wall). */
   double estar() const { return Estar_; }
   double gstar() const { return Gstar_; }
+  /* The compliance sums of the two bodies' materials (dc/mindlin.h). */
+  const dc_mindlin_pair &mindlin_pair() const { return pair_; }
 
  protected:
   virtual void evaluate() = 0;
@@ -63,6 +66,7 @@ class GranSubModDcNormal : public GranSubModNormal {
     Emod = E;
     poiss = nu;
     if (mixed_) return;
+    dc_mindlin_pair_init(E, nu, E, nu, &pair_);
     if (gm->contact_type == PAIR) {
       Estar_ = mix_stiffnessE(E, E, nu, nu);
       Gstar_ = mix_stiffnessG(E, E, nu, nu);
@@ -76,6 +80,7 @@ class GranSubModDcNormal : public GranSubModNormal {
   {
     Estar_ = mix_stiffnessE(E1, E2, nu1, nu2);
     Gstar_ = mix_stiffnessG(E1, E2, nu1, nu2);
+    dc_mindlin_pair_init(E1, nu1, E2, nu2, &pair_);
     mixed_ = true;
   }
 
@@ -85,6 +90,7 @@ class GranSubModDcNormal : public GranSubModNormal {
 
   double F_ = 0.0, S_ = 0.0, radius_ = 0.0;
   double Estar_ = 0.0, Gstar_ = 0.0;
+  dc_mindlin_pair pair_ = {};
   dc_patch patch_ = {};
   bool patch_wanted_ = false, mixed_ = false;
 };
@@ -95,6 +101,61 @@ inline GranSubModDcNormal *dc_normal(GranularModel *gm)
 {
   return dynamic_cast<GranSubModDcNormal *>(gm->normal_model);
 }
+
+/* What the project's tangential and rolling sub-models read from the
+   normal model of their contact (LIGGGHTS: contact_patch.h's reader): the
+   contact patch, E*, G* and the compliance sums of the two materials. From
+   the project's normal sub-model; under a LAMMPS normal model with E and
+   nu (hertz/material, ...) the circle a = (R delta)^1/2 with friction load
+   its elastic force, as the LIGGGHTS models read a stock normal model, and
+   both bodies of its material (a mixed type pair: its mixed E and nu, as
+   LAMMPS' mindlin). */
+class DcContactReader {
+ public:
+  /* From the reader's init(); with need_project_normal a LAMMPS normal
+     model is refused (a law that needs more than the circle). */
+  void init(GranSubMod *reader, GranularModel *gm, Error *error, bool need_project_normal)
+  {
+    normal_ = dc_normal(gm);
+    GranSubModNormal *nm = gm->normal_model;
+    if (normal_) {
+      normal_->want_patch();
+      estar = normal_->estar();
+      gstar = normal_->gstar();
+      pair = normal_->mindlin_pair();
+      return;
+    }
+    if (need_project_normal)
+      error->all(FLERR, "{} needs one of the project's normal sub-models (dc/hertz_elliptic, ...) for the contact "
+                 "patch, not {}", reader->name, nm->name);
+    if (nm->get_cohesive_flag())
+      error->all(FLERR, "{} under the cohesive LAMMPS normal model {}: the circular patch is Hertz's; use a project "
+                 "normal sub-model (dc/)", reader->name, nm->name);
+    const double E = nm->get_emod(), nu = nm->get_poiss();
+    if (!nm->get_material_properties() || dc_mindlin_pair_init(E, nu, E, nu, &pair) != DC_OK)
+      error->all(FLERR, "{} needs a normal model with E > 0 and nu in (-1, 0.5] (e.g. dc/hertz_elliptic, "
+                 "hertz/material), not {}", reader->name, nm->name);
+    gstar = dc_mindlin_pair_gstar(&pair);
+    estar = dc_mindlin_pair_estar(&pair);
+  }
+
+  /* This step's patch. */
+  const dc_patch &patch(const GranularModel *gm)
+  {
+    if (normal_) return normal_->patch();
+    dc_patch_circular(gm->Reff, gm->delta, gm->Fnormal, &stock_);
+    return stock_;
+  }
+
+  GranSubModDcNormal *normal() const { return normal_; }
+
+  double estar = 0.0, gstar = 0.0;
+  dc_mindlin_pair pair = {};
+
+ private:
+  GranSubModDcNormal *normal_ = nullptr;
+  dc_patch stock_ = {};
+};
 
 /* The relative tangential velocity of the surfaces at the contact point,
    with the lever arms to the contact point, radius - delta/2 (a wall: the

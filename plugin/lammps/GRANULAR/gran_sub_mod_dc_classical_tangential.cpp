@@ -40,11 +40,7 @@ void GranSubModTangentialDcClassical::coeffs_to_local()
    dc_classical_tangential_init). */
 void GranSubModTangentialDcClassical::init()
 {
-  normal_ = dc_normal(gm);
-  if (!normal_)
-    error->all(FLERR, "{} needs one of the project's normal sub-models (dc/hertz_elliptic, ...) for the contact "
-               "patch, not {}", name, gm->normal_model->name);
-  normal_->want_patch();
+  contact_.init(this, gm, error, false);
   dc_classical_tangential_params p;
   std::memset(&p, 0, sizeof p);
   p.law = law_;
@@ -56,8 +52,8 @@ void GranSubModTangentialDcClassical::init()
   p.e_t = coeffs[6];
   p.eta_l = coeffs[7];
   p.t_visc = coeffs[8];
-  p.Gstar = normal_->gstar();
-  p.Estar = normal_->estar();
+  p.Gstar = contact_.gstar;
+  p.Estar = contact_.estar;
   /* the coefficients the law does not read (the LIGGGHTS model's defaults) */
   const bool springy = law_ == DC_CT_SPRING_SLIDING || law_ == DC_CT_SPRING_DASHPOT_SLIDING ||
       law_ == DC_CT_INCREMENTAL;
@@ -94,7 +90,7 @@ void GranSubModTangentialDcClassical::calculate_forces()
   }
   double vt[3];
   dc_contact_point_velocity(gm, vt);
-  const dc_patch &p = normal_->patch();
+  const dc_patch &p = contact_.patch(gm);
   /* LIGGGHTS' kn: the secant normal stiffness; gamman: the damping's */
   const dc_classical_tangential_contact c = {gm->meff, gm->delta > 0.0 ? gm->Fnormal / gm->delta : 0.0,
                                              gm->damping_model->get_damp_prefactor()};

@@ -23,8 +23,8 @@
    model, which does not ask for their properties); the ranges are those of
    dc_classical_tangential_check.
    G*, E* and the contact patch (semi-axis a, friction load F_bound) come
-   from the normal sub-model, which must be one of the project's (error at
-   init otherwise); meff, the normal damping coefficient (the damping
+   from the normal sub-model (DcContactReader: under a LAMMPS normal model
+   the circle (R delta)^1/2, as the LIGGGHTS model under a stock one); meff, the normal damping coefficient (the damping
    sub-model's) and K_n as LIGGGHTS' sidata.meff, gamman, kn. The velocity
    at the contact point is dc_contact_point_velocity's (lever arms
    radius - delta/2). LAMMPS applies this force's torque with the lever
@@ -59,7 +59,7 @@ class GranSubModTangentialDcClassical : public GranSubModTangential {
  protected:
   int law_ = 0, nfields_ = 0;
   dc_classical_tangential model_ = {};
-  GranSubModDcNormal *normal_ = nullptr;
+  DcContactReader contact_;
 };
 
 }    // namespace Granular_NS

@@ -65,7 +65,6 @@ void GranSubModTangentialDcCmd::mix_coeffs(double *icoeffs, double *jcoeffs)
   coeffs[1] = icoeffs[1];
   coeffs[2] = mix_geom(icoeffs[2], jcoeffs[2]);
   coeffs[3] = icoeffs[3];
-  mixed_ = true;
   coeffs_to_local();
 }
 
@@ -74,30 +73,8 @@ void GranSubModTangentialDcCmd::init()
   if (coeffs[3] != 0.0)
     error->all(FLERR, "{} coefficient rough = 1 (tangentialRoughness) needs a normal sub-model that publishes the "
                "summits' patch; none is available in LAMMPS", name);
-  GranSubModDcNormal *normal = dc_normal(gm);
-  if (normal)
-    normal->want_patch();
-  else if (gm->normal_model->get_cohesive_flag())
-    error->all(FLERR, "{} under the cohesive LAMMPS normal model {}: the circular patch is Hertz's; use a project "
-               "normal sub-model (dc/)", name, gm->normal_model->name);
-  if (!gm->normal_model->get_material_properties())
-    error->all(FLERR, "{} needs a normal model with E and nu (e.g. dc/hertz_elliptic, hertz/material), not {}", name,
-               gm->normal_model->name);
-  if (mixed_ && normal) {
-    /* two materials (a mixed type pair): the project's normal sub-model
-       keeps their E* and G*, and with them the compliance sums of
-       dc/mindlin.h, 1/G* = 2 s0 - s1 and 1/E* = (s0 - s1)/2 */
-    const double Es = normal->estar(), Gs = normal->gstar();
-    pair_.s0 = 1.0 / Gs - 2.0 / Es;
-    pair_.s1 = 1.0 / Gs - 4.0 / Es;
-  } else {
-    /* both bodies of the normal model's material (LAMMPS' own normal
-       models keep only the mixed E and nu of a mixed pair, as its mindlin) */
-    const double E = gm->normal_model->get_emod(), nu = gm->normal_model->get_poiss();
-    if (dc_mindlin_pair_init(E, nu, E, nu, &pair_) != DC_OK)
-      error->all(FLERR, "{}: the normal model's E = {} and nu = {} give no Mindlin stiffness (need E > 0, nu in "
-                 "(-1, 0.5])", name, E, nu);
-  }
+  contact_.init(this, gm, error, false);
+  pair_ = contact_.pair;
   if (gm->twisting_model->name == "marshall")
     error->all(FLERR, "{} with twisting marshall: marshall reads a linear tangential stiffness, which this law has "
                "not; use twisting dc/cmd_twisting", name);
@@ -121,10 +98,7 @@ void GranSubModTangentialDcCmd::calculate_forces()
     return;
   }
 
-  dc_patch stock;
-  const GranSubModDcNormal *normal = dc_normal(gm);
-  if (!normal) dc_patch_circular(gm->Reff, gm->delta, gm->Fnormal, &stock);
-  const dc_patch &p = normal ? normal->patch() : stock;
+  const dc_patch &p = contact_.patch(gm);
 
   const double dt = gm->dt, *n = gm->nx;
   double vtr[3];

@@ -23,10 +23,9 @@
    project's normal sub-model's (dc_normal()->patch()); under a LAMMPS
    normal model the circle a = (R delta)^1/2, R the effective radius, with
    friction load its elastic force (not with a cohesive LAMMPS normal
-   model). Mindlin's stiffness from the normal model's E and nu (both
-   bodies of that material); for a mixed type pair from the project's
-   normal sub-model's E* and G* of the two materials (under a LAMMPS
-   normal model: its mixed E and nu, as LAMMPS' mindlin). The damping sub-model does not act on the tangential
+   model). Mindlin's stiffness from the two bodies' materials as the
+   normal model has them (DcContactReader; under a LAMMPS normal model
+   its E and nu, mixed for a mixed type pair as LAMMPS' mindlin). The damping sub-model does not act on the tangential
    force: the law's dissipation is its own (slip, t_visc). With a rolling
    sub-model that takes the tangential force over (dc_handover) nothing
    is applied while the contact rolls and the history starts afresh. At a
@@ -44,6 +43,7 @@ GranSubModStyle(dc/cmd_twisting,GranSubModTwistingDcCmd,TWISTING);
 
 #include "dc/cmd_tangential.h"
 #include "dc/mindlin.h"
+#include "dc_sub_mod.h"
 #include "gran_sub_mod_tangential.h"
 #include "gran_sub_mod_twisting.h"
 
@@ -65,9 +65,9 @@ class GranSubModTangentialDcCmd : public GranSubModTangential {
 
  private:
   dc_cmd_params params_ = {};
+  DcContactReader contact_;
   dc_mindlin_pair pair_ = {};
   int memory_ = 0;
-  bool mixed_ = false;
   double Mt_ = 0.0;
   GranSubModTwistingDcCmd *twist_ = nullptr;
 };

@@ -52,19 +52,15 @@ void GranSubModRollingDcKalker::coeffs_to_local()
 
 void GranSubModRollingDcKalker::init()
 {
-  normal_ = dc_normal(gm);
-  if (!normal_)
-    error->all(FLERR, "{} needs one of the project's normal sub-models (dc/hertz_elliptic, ...) for the contact "
-               "patch, not {}", name, gm->normal_model->name);
+  contact_.init(this, gm, error, true);
+  normal_ = contact_.normal();
   if (gm->tangential_model->name.rfind("dc/", 0) != 0)
     error->all(FLERR, "{} needs a tangential sub-model that hands the tangential force over while the contact "
                "rolls (dc/classical, ...), not {}", name, gm->tangential_model->name);
-  normal_->want_patch();
-  const double E = normal_->get_emod(), nu = normal_->get_poiss();
-  dc_mindlin_pair m;
   dc_param_error err;
-  if (dc_mindlin_pair_init(E, nu, E, nu, &m) != DC_OK || dc_rolling_material_init(&m, &material_, &err) != DC_OK)
-    error->all(FLERR, "{}: the normal sub-model's E = {} and nu = {}: need E > 0 and nu in [0, 0.5]", name, E, nu);
+  if (dc_rolling_material_init(&contact_.pair, &material_, &err) != DC_OK)
+    error->all(FLERR, "{}: the normal sub-model's E = {} and nu = {}: need E > 0 and nu in [0, 0.5]", name,
+               normal_->get_emod(), normal_->get_poiss());
 }
 
 /* rolling_contact.h, RollingHandover::rolls on spheres: the speed bound of
