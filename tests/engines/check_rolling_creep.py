@@ -86,6 +86,15 @@ for lig, num in (("vermeulenJohnson", 1), ("kalker", 0)):
     c.true(abs(roll - 1.0) < 1e-3 and abs(s[3] / 0.005 - 5.0 / 7.0) < 1e-3,
            "creep %s: released sphere rolls at the end: vx / (omega_y c) = %.6f, vx / v0 = %.6f (5/7 = %.6f)"
            % (lig, roll, s[3] / 0.005, 5.0 / 7.0))
+# the hand-over to and from the Cattaneo-Mindlin law (LIGGGHTS tangential
+# cmd_tangential, LAMMPS dc/cmd_tangential)
+dg, _ = engines.run("liggghts", "rolling_creep/in.liggghts", work, variables=dict(var, tmodel="cmd_tangential"),
+                    tag="liggghts_cmd")
+dl, _ = engines.run("lammps", "rolling_creep/in.lammps", work,
+                    variables=dict(var, creep=1, tangential="dc/cmd_tangential 0.5 0 0 0"), tag="lammps_cmd")
+engines.compare(c, flat(dump(dl), True), flat(dump(dg)), "LAMMPS dc/kalker + dc/cmd_tangential against LIGGGHTS "
+                "kalker + cmd_tangential (atoms 7, 8 torque times (R - delta/2)/R)", names=COLS, columns=CMP)
+
 # the two creep models differ (the pair: Vermeulen-Johnson's saturation)
 fk, fv = runs["kalker"][-1][9][11], runs["vermeulenJohnson"][-1][9][11]
 c.true(abs(fk - fv) > 1e-2 * abs(fv), "creep models differ: atom 10 fz kalker %.6g, vermeulenJohnson %.6g" % (fk, fv))
