@@ -24,8 +24,9 @@
    dc_classical_tangential_check.
    G*, E* and the contact patch (semi-axis a, friction load F_bound) come
    from the normal sub-model (DcContactReader: under a LAMMPS normal model
-   the circle (R delta)^1/2, as the LIGGGHTS model under a stock one); meff, the normal damping coefficient (the damping
-   sub-model's) and K_n as LIGGGHTS' sidata.meff, gamman, kn. The velocity
+   the circle (R delta)^1/2, as the LIGGGHTS model under a stock one);
+   meff, the normal damping coefficient (the damping sub-model's) and K_n
+   as LIGGGHTS' sidata.meff, gamman, kn. The velocity
    at the contact point is dc_contact_point_velocity's (lever arms
    radius - delta/2). LAMMPS applies this force's torque with the lever
    arms radius - delta/2 on a pair, radius on a wall.

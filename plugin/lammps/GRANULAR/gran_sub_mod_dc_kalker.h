@@ -14,9 +14,9 @@
            not roll (LIGGGHTS: rollingVelocityMin, default 1e-3)
      dmin  net rolled distance [-] >= 0, over the patch's semi-axis a, before
            the law acts (LIGGGHTS: rollingDistanceMin, default 2; 0: at once)
-   Kalker's material: E and nu of the normal sub-model (both bodies, or the
-   sphere and the wall, of that material; a pair of types mixed by LAMMPS
-   takes the mixed E and nu), nu in [0, 0.5]. maxRadiusFactor of the
+   Kalker's material: the two bodies' materials as the normal sub-model has
+   them (DcContactReader: both of its E and nu, or of a mixed type pair's
+   two), nu in [0, 0.5]. maxRadiusFactor of the
    LIGGGHTS model concerns superquadrics only.
 
    Who owns the tangential force (GranSubModDcHandover, dc_sub_mod.h):
