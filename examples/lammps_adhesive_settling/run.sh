@@ -9,7 +9,7 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 out=${1:-$root/build/examples/lammps_adhesive_settling}
 mkdir -p "$out"
 cd "$out"
-echo "run: examples/lammps_adhesive_settling in LAMMPS on 2 MPI ranks (about a minute)"
+echo "run: examples/lammps_adhesive_settling in LAMMPS on 2 MPI ranks (about 3 minutes)"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 extra=""
 [ "$(nproc)" -ge 2 ] || extra="--oversubscribe"
