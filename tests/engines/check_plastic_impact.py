@@ -35,6 +35,6 @@ engines.compare(c, engines.out(d2), engines.out(d1), "LAMMPS 2 ranks against 1",
 
 rc, text = engines.run("lammps", "plastic_impact/in.lammps", work, variables={"ca": 1}, tag="bad_ca",
                        expect_error=True)
-c.true(rc != 0 and "dc/jamari_ep coefficient Ca = 1 is outside [2, inf)" in text,
+c.true(rc != 0 and "dc/jamari_ep coefficient Ca (plasticityCa) = 1 is outside [2, inf)" in text,
        "Ca 1: error naming the sub-model, the coefficient and its range")
 c.finish()

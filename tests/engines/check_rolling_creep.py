@@ -104,7 +104,7 @@ d2, _ = engines.run("lammps", "rolling_creep/in.lammps", work, ranks=2, variable
 engines.compare(c, flat(dump(d2)), flat(runs["vermeulenJohnson"]), "LAMMPS 2 ranks against 1", tol=0.0, names=COLS)
 
 # bad coefficients and set-up errors
-for v, msg in (({"creep": 2}, "dc/kalker coefficient creep = 2 is outside {0, 1}"),
+for v, msg in (({"creep": 2}, "dc/kalker coefficient creep = 2 is outside {0 kalker, 1 vermeulenJohnson}"),
                ({"vmin": 0}, "dc/kalker coefficient vmin (rollingVelocityMin) = 0 is outside (0, inf)"),
                ({"dmin": -1}, "dc/kalker coefficient dmin (rollingDistanceMin) = -1 is outside [0, inf)"),
                ({"tangential": "mindlin NULL 1.0 0.5"}, "dc/kalker needs a tangential sub-model that hands"),

@@ -8,9 +8,13 @@
 #define LMP_DC_SUB_MOD_H
 
 #include <cmath>
+#include <cstring>
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include "dc/contract.h"
+#include "dc/hertz_elliptic.h"
 #include "dc/mindlin.h"
 #include "dc/status.h"
 #include "error.h"
@@ -87,6 +91,14 @@ class GranSubModDcNormal : public GranSubModNormal {
   /* dc_check_coeff with this sub-model's name. */
   void check_coeff(const char *coeff, double value, double lo, int lo_open, double hi, int hi_open,
                    const char *range);
+  /* The first three coefficients of every project normal sub-model,
+     E [Pa] > 0, damp >= 0, nu in (-1, 0.5]: checked, damp and the material
+     set. */
+  void material_coeffs();
+  /* Hertz on a sphere contact of effective radius R at overlap delta > 0:
+     F_, S_, radius_ and (if wanted) the patch; the arithmetic of the
+     LIGGGHTS models' sphere path. */
+  void hertz_circle(double R, double delta);
 
   double F_ = 0.0, S_ = 0.0, radius_ = 0.0;
   double Estar_ = 0.0, Gstar_ = 0.0;
@@ -202,6 +214,39 @@ inline void dc_history_transfer(GranSubMod *m, const dc_history_field *table, in
   for (int k = 0; k < n; k++) m->transfer_history_factor[k] = table[k].flips ? -1.0 : 1.0;
 }
 
+/* An integer setting: value one of 0, 1, ..., n - 1, else a LAMMPS error
+   naming the sub-model, the coefficient, its value and the choices
+   (text, e.g. "{0 lsd, 1 hertz}"). Returns the value. */
+inline int dc_check_choice(Error *error, const std::string &model, const char *coeff, double value, int n,
+                           const char *choices)
+{
+  if (!(value >= 0.0 && value <= n - 1 && value == std::floor(value)))
+    error->all(FLERR, "{} coefficient {} = {} is outside {}", model, coeff, value, choices);
+  return static_cast<int>(value);
+}
+
+/* A c_core parameter error (dc_<law>_check) as a LAMMPS error: the
+   coefficient's name from map (pairs of c_core's name, the LIGGGHTS
+   property's, and the coefficient's; a name not in map: other, or
+   c_core's), with c_core's beside it. */
+inline void dc_param_fail(Error *error, const std::string &model, const dc_param_error &err,
+                          std::initializer_list<std::pair<const char *, const char *>> map,
+                          const char *other = nullptr)
+{
+  const char *coeff = other ? other : err.name;
+  for (const auto &m : map)
+    if (std::strcmp(err.name, m.first) == 0) coeff = m.second;
+  error->all(FLERR, "{} coefficient {} ({}) = {} is outside {}", model, coeff, err.name, err.value, err.range);
+}
+
+/* The plastic laws' parameters (dc/jamari_ep.h, dc/gw_rough_plastic.h),
+   the coefficients H, Kv, Ch, Ca. */
+inline void dc_plasticity_fail(Error *error, const std::string &model, const dc_param_error &err)
+{
+  dc_param_fail(error, model, err,
+                {{"hardness", "H"}, {"plasticityKv", "Kv"}, {"plasticityCh", "Ch"}, {"plasticityCa", "Ca"}});
+}
+
 /* lo <= value <= hi (open ends as flagged) or a LAMMPS error naming the
    sub-model, the coefficient, its value and its range. */
 inline void dc_check_coeff(Error *error, const std::string &model, const char *coeff, double value, double lo,
@@ -216,6 +261,29 @@ inline void GranSubModDcNormal::check_coeff(const char *coeff, double value, dou
                                              int hi_open, const char *range)
 {
   dc_check_coeff(error, name, coeff, value, lo, lo_open, hi, hi_open, range);
+}
+
+inline void GranSubModDcNormal::material_coeffs()
+{
+  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
+  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
+  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
+  damp = coeffs[1];
+  material_from(coeffs[0], coeffs[2]);
+}
+
+inline void GranSubModDcNormal::hertz_circle(double R, double delta)
+{
+  double kn;
+  radius_ = dc_hertz_stiffness(Estar_, R, delta, &kn, &S_);
+  F_ = kn * delta;
+  if (patch_wanted_ && !dc_hertz_patch_circle(R, delta, F_, &patch_)) {
+    dc_hertz_geom g;
+    dc_contact c;
+    dc_hertz_geometry_circle(R, &g);
+    dc_hertz_normal(&g, Estar_, delta, &c);
+    dc_patch_from_contact(&c, nullptr, &patch_);
+  }
 }
 
 }    // namespace Granular_NS

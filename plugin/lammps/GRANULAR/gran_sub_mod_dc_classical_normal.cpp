@@ -13,30 +13,14 @@ GranSubModNormalDcClassical::GranSubModNormalDcClassical(GranularModel *gm, LAMM
   dc_history_transfer(this, dc_classical_normal_history, DC_CLASSICAL_NORMAL_NFIELDS);
 }
 
-static bool is_int(double x, double lo, double hi)
-{
-  return x >= lo && x <= hi && x == std::floor(x);
-}
-
 void GranSubModNormalDcClassical::coeffs_to_local()
 {
-  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
-  if (!is_int(coeffs[3], 0, 3))
-    error->all(FLERR, "{} coefficient law = {} is outside {{0 lsd, 1 hertz, 2 hlsConstant, 3 hlsVariable}}", name,
-               coeffs[3]);
-  if (!is_int(coeffs[4], 0, 4) || (coeffs[3] != 1.0 && coeffs[4] != 0.0))
-    error->all(FLERR,
-               "{} coefficient dlaw = {} is outside {{0 restitution, 1 viscoelastic, 2 kuwabaraKono, 3 tsuji, "
-               "4 none}} (law 1; 0 for the other laws)",
-               name, coeffs[4]);
-  if (!is_int(coeffs[5], 0, 3))
-    error->all(FLERR, "{} coefficient stiffness = {} is outside {{0 given, 1 duration, 2 overlap, 3 energy}}", name,
-               coeffs[5]);
-  if (!is_int(coeffs[9], 0, 1)) error->all(FLERR, "{} coefficient limit = {} is outside {{0, 1}}", name, coeffs[9]);
-  damp = coeffs[1];
-  material_from(coeffs[0], coeffs[2]);
+  material_coeffs();
+  const int law = dc_check_choice(error, name, "law", coeffs[3], 4, "{0 lsd, 1 hertz, 2 hlsConstant, 3 hlsVariable}");
+  dc_check_choice(error, name, "dlaw", coeffs[4], law == DC_CLASSICAL_HERTZ ? 5 : 1,
+                  "{0 restitution, 1 viscoelastic, 2 kuwabaraKono, 3 tsuji, 4 none} (law 1; 0 for the other laws)");
+  dc_check_choice(error, name, "stiffness", coeffs[5], 4, "{0 given, 1 duration, 2 overlap, 3 energy}");
+  dc_check_choice(error, name, "limit", coeffs[9], 2, "{0, 1}");
   dc_classical_normal_params p;
   std::memset(&p, 0, sizeof p);
   p.law = static_cast<int>(coeffs[3]);

@@ -22,15 +22,9 @@ GranSubModTangentialDcClassical::GranSubModTangentialDcClassical(GranularModel *
 /* The three settings (integers in their ranges); the history they need. */
 void GranSubModTangentialDcClassical::coeffs_to_local()
 {
-  static const char *const names[3] = {"law", "kt_mode", "damp_mode"};
-  static const double hi[3] = {9.0, 2.0, 3.0};
-  static const char *const ranges[3] = {"{0, 1, ..., 9}", "{0, 1, 2}", "{0, 1, 2, 3}"};
-  for (int k = 0; k < 3; k++) {
-    dc_check_coeff(error, name, names[k], coeffs[k], 0.0, 0, hi[k], 0, ranges[k]);
-    if (coeffs[k] != std::floor(coeffs[k]))
-      error->all(FLERR, "{} coefficient {} = {} is outside {}", name, names[k], coeffs[k], ranges[k]);
-  }
-  law_ = (int) coeffs[0];
+  law_ = dc_check_choice(error, name, "law", coeffs[0], 10, "{0, 1, ..., 9}");
+  dc_check_choice(error, name, "kt_mode", coeffs[1], 3, "{0, 1, 2}");
+  dc_check_choice(error, name, "damp_mode", coeffs[2], 4, "{0, 1, 2, 3}");
   mu = coeffs[3];
   nfields_ = law_ == DC_CT_INCREMENTAL ? DC_CT_HISTORY_NFIELDS : DC_CT_SPRING_NFIELDS;
   dc_history_transfer(this, dc_classical_tangential_history, nfields_);
@@ -66,17 +60,12 @@ void GranSubModTangentialDcClassical::init()
   if (law_ != DC_CT_LANGSTON) p.eta_l = 0.0;
   if (law_ != DC_CT_ZHENG) p.t_visc = 0.0;
   dc_param_error err;
-  if (dc_classical_tangential_init(&p, &model_, &err) != DC_OK) {
-    /* the coefficient's name here, c_core's (the LIGGGHTS property) beside it */
-    static const char *const map[][2] = {{"coefficientFriction", "mu"}, {"kt", "kt"}, {"gammat", "gammat"},
-                                         {"coefficientRestitutionTangential", "e_t"},
-                                         {"langstonDamping", "eta_l"},
-                                         {"tangentialViscoelasticTime", "t_visc"}};
-    const char *which = "of the normal sub-model (E, nu)";
-    for (const auto &m : map)
-      if (std::strcmp(err.name, m[0]) == 0) which = m[1];
-    error->all(FLERR, "{} coefficient {} ({}) = {} is outside {}", name, which, err.name, err.value, err.range);
-  }
+  if (dc_classical_tangential_init(&p, &model_, &err) != DC_OK)
+    dc_param_fail(error, name, err,
+                  {{"coefficientFriction", "mu"}, {"kt", "kt"}, {"gammat", "gammat"},
+                   {"coefficientRestitutionTangential", "e_t"}, {"langstonDamping", "eta_l"},
+                   {"tangentialViscoelasticTime", "t_visc"}},
+                  "of the normal sub-model (E, nu)");
 }
 
 void GranSubModTangentialDcClassical::calculate_forces()

@@ -15,17 +15,14 @@ using namespace Granular_NS;
 
 namespace {
 /* The law's history: the force's fields, then the twist's. */
-int force_fields(int memory) { return memory ? DC_CMDTP_FORCE_NFIELDS : DC_CMD_FORCE_NFIELDS; }
-int twist_fields(int memory)
-{
-  return memory ? DC_CMDTP_HISTORY_NFIELDS - DC_CMDTP_FORCE_NFIELDS : DC_CMD_HISTORY_NFIELDS - DC_CMD_FORCE_NFIELDS;
-}
+const int CMD_TWIST = DC_CMD_HISTORY_NFIELDS - DC_CMD_FORCE_NFIELDS;
+const int CMDTP_TWIST = DC_CMDTP_HISTORY_NFIELDS - DC_CMDTP_FORCE_NFIELDS;
+int force_fields(int memory) { return memory ? (int) DC_CMDTP_FORCE_NFIELDS : (int) DC_CMD_FORCE_NFIELDS; }
+int twist_fields(int memory) { return memory ? CMDTP_TWIST : CMD_TWIST; }
 const dc_history_field *table(int memory) { return memory ? dc_cmdtp_history : dc_cmd_history; }
 /* dc/cmd_twisting keeps room for either law's twist */
-const int TWIST_SLOTS = DC_CMD_HISTORY_NFIELDS - DC_CMD_FORCE_NFIELDS > DC_CMDTP_HISTORY_NFIELDS - DC_CMDTP_FORCE_NFIELDS
-    ? DC_CMD_HISTORY_NFIELDS - DC_CMD_FORCE_NFIELDS
-    : DC_CMDTP_HISTORY_NFIELDS - DC_CMDTP_FORCE_NFIELDS;
-static_assert(DC_CMD_HISTORY_NFIELDS >= DC_CMDTP_HISTORY_NFIELDS, "a scratch state holds either history");
+const int TWIST_SLOTS = CMD_TWIST > CMDTP_TWIST ? CMD_TWIST : CMDTP_TWIST;
+static_assert((int) DC_CMD_HISTORY_NFIELDS >= (int) DC_CMDTP_HISTORY_NFIELDS, "a scratch state holds either history");
 }    // namespace
 
 GranSubModTangentialDcCmd::GranSubModTangentialDcCmd(GranularModel *gm, LAMMPS *lmp) : GranSubModTangential(gm, lmp)
@@ -38,13 +35,10 @@ GranSubModTangentialDcCmd::GranSubModTangentialDcCmd(GranularModel *gm, LAMMPS *
 void GranSubModTangentialDcCmd::coeffs_to_local()
 {
   dc_check_coeff(error, name, "mu", coeffs[0], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  if (coeffs[1] != 0.0 && coeffs[1] != 1.0)
-    error->all(FLERR, "{} coefficient memory = {} is outside {{0 (profile), 1 (turningPoints)}}", name, coeffs[1]);
+  memory_ = dc_check_choice(error, name, "memory", coeffs[1], 2, "{0 (profile), 1 (turningPoints)}");
   dc_check_coeff(error, name, "t_visc", coeffs[2], 0.0, 0, HUGE_VAL, 1, "[0, inf) s");
-  if (coeffs[3] != 0.0 && coeffs[3] != 1.0)
-    error->all(FLERR, "{} coefficient rough = {} is outside {{0 (off), 1 (on)}}", name, coeffs[3]);
+  dc_check_choice(error, name, "rough", coeffs[3], 2, "{0 (off), 1 (on)}");
   mu = coeffs[0];
-  memory_ = (int)coeffs[1];
   params_.mu = coeffs[0];
   params_.t_visc = coeffs[2];
   params_.dissipation = coeffs[2] > 0.0;

@@ -17,30 +17,18 @@ GranSubModNormalDcGwRough::GranSubModNormalDcGwRough(GranularModel *gm, LAMMPS *
   beyond_contact = 1;
 }
 
-static bool is_int(double x, double lo, double hi)
-{
-  return x >= lo && x <= hi && x == std::floor(x);
-}
-
 void GranSubModNormalDcGwRough::coeffs_to_local()
 {
-  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
+  material_coeffs();
   check_coeff("sigma", coeffs[3], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  if (!is_int(coeffs[4], 0, 2))
-    error->all(FLERR, "{} coefficient form = {} is outside {{0 table, 1 feng, 2 GW closed form}}", name, coeffs[4]);
-  form_ = static_cast<int>(coeffs[4]);
+  form_ = dc_check_choice(error, name, "form", coeffs[4], 3, "{0 table, 1 feng, 2 GW closed form}");
   if (form_ != FORM_ELLIPTIC)
     check_coeff("mu", coeffs[5], DC_FENG_MU_MIN, 0, DC_FENG_MU_MAX, 0, "[1, 50]");
   else
     check_coeff("n_asp", coeffs[6], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  if (!is_int(coeffs[7], 0, 1)) error->all(FLERR, "{} coefficient fitted = {} is outside {{0, 1}}", name, coeffs[7]);
-  if (!is_int(coeffs[8], 0, 1) || (coeffs[8] == 1.0 && form_ != FORM_ELLIPTIC))
-    error->all(FLERR, "{} coefficient plastic = {} is outside {{0, 1}} (1 with form 2 only)", name, coeffs[8]);
-  plastic_ = coeffs[8] == 1.0;
-  damp = coeffs[1];
-  material_from(coeffs[0], coeffs[2]);
+  dc_check_choice(error, name, "fitted", coeffs[7], 2, "{0, 1}");
+  plastic_ = dc_check_choice(error, name, "plastic", coeffs[8], form_ == FORM_ELLIPTIC ? 2 : 1,
+                             "{0, 1} (1 with form 2 only)") == 1;
   if (!mixed_sigma_) sigma_ = dc_gw_roughness_combine(coeffs[3], coeffs[3]);
   n_asp_ = coeffs[6];
   dc_param_error err;
@@ -50,14 +38,7 @@ void GranSubModNormalDcGwRough::coeffs_to_local()
     pp_.c_h = coeffs[11];
     pp_.c_A = coeffs[12];
     check_coeff("Kv", coeffs[10], 0.0, 0, HUGE_VAL, 1, "(0, inf), or 0 for the default");
-    if (dc_gw_plastic_check(&pp_, &err) != DC_OK) {
-      static const char *const coeff_of[][2] = {
-          {"hardness", "H"}, {"plasticityKv", "Kv"}, {"plasticityCh", "Ch"}, {"plasticityCa", "Ca"}};
-      const char *c = err.name;
-      for (auto &n : coeff_of)
-        if (!std::strcmp(err.name, n[0])) c = n[1];
-      error->all(FLERR, "{} coefficient {} = {} is outside {}", name, c, err.value, err.range);
-    }
+    if (dc_gw_plastic_check(&pp_, &err) != DC_OK) dc_plasticity_fail(error, name, err);
   }
   check_coeff("w", coeffs[13], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
   if (coeffs[13] != 0.0 && form_ != FORM_ELLIPTIC)

@@ -14,11 +14,7 @@ GranSubModNormalDcHertzElliptic::GranSubModNormalDcHertzElliptic(GranularModel *
 
 void GranSubModNormalDcHertzElliptic::coeffs_to_local()
 {
-  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
-  damp = coeffs[1];
-  material_from(coeffs[0], coeffs[2]);
+  material_coeffs();
 }
 
 void GranSubModNormalDcHertzElliptic::mix_coeffs(double *icoeffs, double *jcoeffs)
@@ -34,15 +30,5 @@ void GranSubModNormalDcHertzElliptic::mix_coeffs(double *icoeffs, double *jcoeff
    the arithmetic of the LIGGGHTS model's sphere path. */
 void GranSubModNormalDcHertzElliptic::evaluate()
 {
-  const double R = gm->Reff, delta = gm->delta;
-  double kn;
-  radius_ = dc_hertz_stiffness(Estar_, R, delta, &kn, &S_);
-  F_ = kn * delta;
-  if (patch_wanted_ && !dc_hertz_patch_circle(R, delta, F_, &patch_)) {
-    dc_hertz_geom g;
-    dc_contact c;
-    dc_hertz_geometry_circle(R, &g);
-    dc_hertz_normal(&g, Estar_, delta, &c);
-    dc_patch_from_contact(&c, nullptr, &patch_);
-  }
+  hertz_circle(gm->Reff, gm->delta);
 }

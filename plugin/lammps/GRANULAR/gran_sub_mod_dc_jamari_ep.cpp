@@ -17,25 +17,14 @@ GranSubModNormalDcJamariEp::GranSubModNormalDcJamariEp(GranularModel *gm, LAMMPS
 
 void GranSubModNormalDcJamariEp::coeffs_to_local()
 {
-  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
+  material_coeffs();
   check_coeff("Kv", coeffs[4], 0.0, 0, HUGE_VAL, 1, "(0, inf), or 0 for the default");
-  damp = coeffs[1];
-  material_from(coeffs[0], coeffs[2]);
   p_ = dc_jamari_defaults(coeffs[3], coeffs[2]);
   if (coeffs[4] != 0.0) p_.K_v = coeffs[4];
   p_.c_h = coeffs[5];
   p_.c_A = coeffs[6];
   dc_param_error err;
-  if (dc_jamari_check(&p_, &err) != DC_OK) {
-    static const char *const coeff_of[][2] = {
-        {"hardness", "H"}, {"plasticityKv", "Kv"}, {"plasticityCh", "Ch"}, {"plasticityCa", "Ca"}};
-    const char *c = err.name;
-    for (auto &n : coeff_of)
-      if (!std::strcmp(err.name, n[0])) c = n[1];
-    error->all(FLERR, "{} coefficient {} = {} is outside {}", name, c, err.value, err.range);
-  }
+  if (dc_jamari_check(&p_, &err) != DC_OK) dc_plasticity_fail(error, name, err);
   yield_ratio_ = dc_jamari_circle_yield_ratio(Estar_, &p_);
 }
 
@@ -60,16 +49,7 @@ void GranSubModNormalDcJamariEp::evaluate()
   dc_jamari_state h;
   std::memcpy(&h, &gm->history[history_index], sizeof h);
   if (h.delta_max == 0.0 && delta <= yield_ratio_ * R) {
-    double kn;
-    radius_ = dc_hertz_stiffness(Estar_, R, delta, &kn, &S_);
-    F_ = kn * delta;
-    if (patch_wanted_ && !dc_hertz_patch_circle(R, delta, F_, &patch_)) {
-      dc_hertz_geom g;
-      dc_contact c;
-      dc_hertz_geometry_circle(R, &g);
-      dc_hertz_normal(&g, Estar_, delta, &c);
-      dc_patch_from_contact(&c, nullptr, &patch_);
-    }
+    hertz_circle(R, delta);
     return;
   }
   dc_hertz_geom g;

@@ -23,22 +23,15 @@ GranSubModNormalDcJkrElliptic::GranSubModNormalDcJkrElliptic(GranularModel *gm, 
 
 void GranSubModNormalDcJkrElliptic::coeffs_to_local()
 {
-  check_coeff("E", coeffs[0], 0.0, 1, HUGE_VAL, 1, "(0, inf)");
-  check_coeff("damp", coeffs[1], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("nu", coeffs[2], -1.0, 1, 0.5, 0, "(-1, 0.5]");
+  material_coeffs();
   check_coeff("w", coeffs[3], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  check_coeff("law", coeffs[4], 0.0, 0, 3.0, 0, "{0 jkr, 1 dmt, 2 maugis, 3 tabor}");
-  if (coeffs[4] != std::floor(coeffs[4]))
-    error->all(FLERR, "{} coefficient law = {} is outside {{0 jkr, 1 dmt, 2 maugis, 3 tabor}}", name, coeffs[4]);
-  law_ = static_cast<int>(coeffs[4]);
+  law_ = dc_check_choice(error, name, "law", coeffs[4], 4, "{0 jkr, 1 dmt, 2 maugis, 3 tabor}");
   if (law_ >= LAW_MD)
     check_coeff("z0", coeffs[5], 0.0, 1, HUGE_VAL, 1, "(0, inf) (laws maugis and tabor)");
   else
     check_coeff("z0", coeffs[5], 0.0, 0, HUGE_VAL, 1, "[0, inf)");
-  damp = coeffs[1];
   w_ = coeffs[3];
   z0_ = coeffs[5];
-  material_from(coeffs[0], coeffs[2]);
   dc_param_error err;
   if (dc_jkr_check(w_, &err) != DC_OK)
     error->all(FLERR, "{} coefficient w = {} is outside {}", name, err.value, err.range);

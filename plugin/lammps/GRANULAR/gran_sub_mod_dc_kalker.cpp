@@ -32,18 +32,11 @@ void GranSubModRollingDcKalker::coeffs_to_local()
   params_.model = (int) coeffs[1];
   params_.v_min = coeffs[2];
   params_.roll_min = coeffs[3];
-  if (coeffs[1] != 0.0 && coeffs[1] != 1.0)
-    error->all(FLERR, "{} coefficient creep = {} is outside {{0, 1}} (0 kalker, 1 vermeulenJohnson)", name,
-               coeffs[1]);
+  dc_check_choice(error, name, "creep", coeffs[1], 2, "{0 kalker, 1 vermeulenJohnson}");
   dc_param_error err;
-  if (dc_rolling_check(&params_, &err) != DC_OK) {
-    /* the coefficient's name here, c_core's (the LIGGGHTS setting) beside it */
-    const std::string which = std::string(err.name) == "coefficientFriction" ? "mu"
-        : std::string(err.name) == "rollingVelocityMin"                      ? "vmin"
-        : std::string(err.name) == "rollingDistanceMin"                      ? "dmin"
-                                                                             : "creep";
-    error->all(FLERR, "{} coefficient {} ({}) = {} is outside {}", name, which, err.name, err.value, err.range);
-  }
+  if (dc_rolling_check(&params_, &err) != DC_OK)
+    dc_param_fail(error, name, err,
+                  {{"coefficientFriction", "mu"}, {"rollingVelocityMin", "vmin"}, {"rollingDistanceMin", "dmin"}});
   if (params_.roll_min > 0.0)
     dc_history_transfer(this, rolled_history, 3);
   else
