@@ -1956,7 +1956,9 @@ static void fuzz_mindlin(void)
   fz_fn *f = fz_new("dc_mindlin_pair_init");
   fz_fn *fs = fz_new("dc_mindlin_stiffness");
   fz_fn *fk = fz_new("dc_mindlin_kt_circle");
-  fs->seconds = fk->seconds = 0.0;
+  fz_fn *fg = fz_new("dc_mindlin_pair_gstar");
+  fz_fn *fe = fz_new("dc_mindlin_pair_estar");
+  fs->seconds = fk->seconds = fg->seconds = fe->seconds = 0.0;
   for (long k = 0; k < N_CALLS; k++) {
     fz_call();
     double v[4];
@@ -1970,6 +1972,20 @@ static void fuzz_mindlin(void)
     const int st = dc_mindlin_pair_init(v[0], v[1], v[2], v[3], &p);
     FZ_CHECK(f, st, bad, !bad && v[0] > 0.0 && v[2] > 0.0 && v[1] > -1.0 && v[1] <= 0.5 && v[3] > -1.0 && v[3] <= 0.5,
              UNTOUCHED(p), FIN(p) && p.s0 > 0.0, "E1 %.17g nu1 %.17g E2 %.17g nu2 %.17g", v[0], v[1], v[2], v[3]);
+    /* G* and E* of the pair against their sums over the bodies (where the
+       compliances stay far from overflow) */
+    if (st == DC_OK && p.s0 < 1e300) {
+      const double g1 = v[0] / (2.0 * (1.0 + v[1])), g2 = v[2] / (2.0 * (1.0 + v[3]));
+      const double gw = 1.0 / ((2.0 - v[1]) / g1 + (2.0 - v[3]) / g2);
+      const double ew = 1.0 / ((1.0 - v[1] * v[1]) / v[0] + (1.0 - v[3] * v[3]) / v[2]);
+      const double gs = dc_mindlin_pair_gstar(&p), es = dc_mindlin_pair_estar(&p);
+      fg->calls++;
+      fe->calls++;
+      FZ_EXPECT(fg, fabs(gs - gw) <= 1e-12 * gw, "not 1/sum (2 - nu_i)/G_i", "%.17g %.17g %.17g %.17g: %.17g %.17g",
+                v[0], v[1], v[2], v[3], gs, gw);
+      FZ_EXPECT(fe, fabs(es - ew) <= 1e-12 * ew, "not 1/sum (1 - nu_i^2)/E_i",
+                "%.17g %.17g %.17g %.17g: %.17g %.17g", v[0], v[1], v[2], v[3], es, ew);
+    }
     /* the stiffnesses on this pair (or on raw values), K and D of an ellipse */
     fs->seconds -= fz_now();
     fz_call();
