@@ -35,6 +35,7 @@ void GranSubModTangentialDcClassical::coeffs_to_local()
 void GranSubModTangentialDcClassical::init()
 {
   contact_.init(this, gm, error, false);
+  handover_ = dc_handover(gm);
   dc_classical_tangential_params p;
   std::memset(&p, 0, sizeof p);
   p.law = law_;
@@ -71,8 +72,7 @@ void GranSubModTangentialDcClassical::init()
 void GranSubModTangentialDcClassical::calculate_forces()
 {
   double *hist = &gm->history[history_index];
-  GranSubModDcHandover *roll = dc_handover(gm);
-  if (roll && roll->rolls()) {    // the rolling sub-model owns the tangential force
+  if (handover_ && handover_->rolls()) {    // the rolling sub-model owns the tangential force
     if (gm->history_update) std::memset(hist, 0, nfields_ * sizeof(double));
     gm->fs[0] = gm->fs[1] = gm->fs[2] = 0.0;
     return;

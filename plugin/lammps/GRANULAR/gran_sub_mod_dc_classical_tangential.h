@@ -61,6 +61,7 @@ class GranSubModTangentialDcClassical : public GranSubModTangential {
   int law_ = 0, nfields_ = 0;
   dc_classical_tangential model_ = {};
   DcContactReader contact_;
+  GranSubModDcHandover *handover_ = nullptr;    // found once at init
 };
 
 }    // namespace Granular_NS

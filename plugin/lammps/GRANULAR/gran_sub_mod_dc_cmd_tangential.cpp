@@ -69,6 +69,7 @@ void GranSubModTangentialDcCmd::init()
                "summits' patch; none is available in LAMMPS", name);
   contact_.init(this, gm, error, false);
   pair_ = contact_.pair;
+  handover_ = dc_handover(gm);
   if (gm->twisting_model->name == "marshall")
     error->all(FLERR, "{} with twisting marshall: marshall reads a linear tangential stiffness, which this law has "
                "not; use twisting dc/cmd_twisting", name);
@@ -82,8 +83,7 @@ void GranSubModTangentialDcCmd::calculate_forces()
   double *hf = &gm->history[history_index];
   double *ht = twist_ ? &gm->history[twist_->history_index] : nullptr;
   Mt_ = 0.0;
-  GranSubModDcHandover *handover = dc_handover(gm);
-  if (handover && handover->rolls()) {   /* the rolling sub-model owns the tangential force */
+  if (handover_ && handover_->rolls()) {   /* the rolling sub-model owns the tangential force */
     if (gm->history_update) {
       memset(hf, 0, nf * sizeof(double));
       if (nt) memset(ht, 0, nt * sizeof(double));

@@ -66,6 +66,7 @@ class GranSubModTangentialDcCmd : public GranSubModTangential {
  private:
   dc_cmd_params params_ = {};
   DcContactReader contact_;
+  GranSubModDcHandover *handover_ = nullptr;    // found once (a cast per call costs more than the law's plumbing)
   dc_mindlin_pair pair_ = {};
   int memory_ = 0;
   double Mt_ = 0.0;
