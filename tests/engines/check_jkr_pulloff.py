@@ -14,21 +14,10 @@ COLS = "time z1 fz1 x2 x3 fx2".split()
 W, R_WALL, R_PAIR = 0.5, 1e-3, 0.5e-3
 
 
-def rows(folder):
-    """out.txt without the repeated row LAMMPS prints at the second run's
-    set-up (LIGGGHTS prints none)."""
-    seen, res = set(), []
-    for r in engines.out(folder):
-        if r[0] not in seen:
-            seen.add(r[0])
-            res.append(r)
-    return res
-
-
 # w 0: Hertz (no force once apart)
 dg, _ = engines.run("liggghts", "jkr_pulloff/in.liggghts", work, variables={"w": 0.0}, tag="liggghts_w0")
 dl, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"w": 0.0}, tag="lammps_w0")
-g, l = rows(dg), rows(dl)
+g, l = engines.out(dg), engines.out(dl)
 engines.compare(c, l, g, "w 0: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic", names=COLS)
 c.true(min(r[2] for r in l) >= 0.0 and all(r[2] == 0.0 for r in l if r[1] >= R_WALL),
        "w 0: no tensile force, none once apart")
@@ -39,7 +28,7 @@ for alaw, law, e in [("jkr", 0, 1.0), ("jkr", 0, 0.5), ("dmt", 1, 1.0)]:
                         tag="liggghts_" + tag)
     dl, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"law": law, "e": e},
                         tag="lammps_" + tag)
-    g, l = rows(dg), rows(dl)
+    g, l = engines.out(dg), engines.out(dl)
     engines.compare(c, l, g, "%s e %g: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic" % (alaw, e), names=COLS)
     # undamped, the largest tensile force is the load-controlled pull-off
     # force (DMT: at the last step before touch, less its 2 nm Hertz force)
@@ -63,7 +52,7 @@ for alaw, law, e in [("jkr", 0, 1.0), ("jkr", 0, 0.5), ("dmt", 1, 1.0)]:
 # where dc/jkr_elliptic follows the stable branch to delta_break
 dj, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"normal": "jkr"}, tag="lammps_jkr")
 dd, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, tag="lammps_dc_jkr")
-j, d = rows(dj), rows(dd)
+j, d = engines.out(dj), engines.out(dd)
 for k, what, r0 in [(2, "wall", R_WALL), (5, "pair", 2 * R_WALL)]:
     both = [(a[k], b[k]) for a, b in zip(d, j) if a[k] != 0.0 and b[k] != 0.0]
     worst = max(abs(a - b) / abs(a) for a, b in both)
@@ -77,7 +66,7 @@ for k, what, r0 in [(2, "wall", R_WALL), (5, "pair", 2 * R_WALL)]:
 # 2 ranks (the pair on both sides of the cut at x = 0) against 1
 d2, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, ranks=2, tag="lammps_2ranks")
 d1, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, tag="lammps_1rank")
-engines.compare(c, rows(d2), rows(d1), "LAMMPS 2 ranks against 1", tol=0.0, names=COLS)
+engines.compare(c, engines.out(d2), engines.out(d1), "LAMMPS 2 ranks against 1", tol=0.0, names=COLS)
 
 rc, text = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"law": 5}, tag="bad_law",
                        expect_error=True)

@@ -11,17 +11,6 @@ COLS = "time z1 fz1 x2 x3 fx2".split()
 R = 1e-3
 
 
-def rows(folder):
-    """out.txt without the repeated row LAMMPS prints at the second run's
-    set-up (LIGGGHTS prints none)."""
-    seen, res = set(), []
-    for r in engines.out(folder):
-        if r[0] not in seen:
-            seen.add(r[0])
-            res.append(r)
-    return res
-
-
 # z0 1e-5: Tabor parameters 0.39 (wall) and 0.31 (pair), Maugis-Dugdale;
 # tabor with z0 7e-7: 5.6 (wall: JKR) and 4.4 (pair: Maugis-Dugdale)
 for alaw, law, z0 in [("maugis", 2, 1e-5), ("tabor", 3, 7e-7)]:
@@ -29,7 +18,7 @@ for alaw, law, z0 in [("maugis", 2, 1e-5), ("tabor", 3, 7e-7)]:
                         tag="liggghts_" + alaw)
     dl, _ = engines.run("lammps", "maugis_loop/in.lammps", work, variables={"law": law, "z0": z0},
                         tag="lammps_" + alaw)
-    g, l = rows(dg), rows(dl)
+    g, l = engines.out(dg), engines.out(dl)
     engines.compare(c, l, g, "%s z0 %g: LAMMPS dc/jkr_elliptic law %d against LIGGGHTS jkr_elliptic" % (alaw, z0, law),
                     names=COLS)
     # energy the loop takes from the driver: - sum fz1 dz1 (wall), sum fx2 dx2 (pair)
@@ -44,7 +33,7 @@ for alaw, law, z0 in [("maugis", 2, 1e-5), ("tabor", 3, 7e-7)]:
 
 d2, _ = engines.run("lammps", "maugis_loop/in.lammps", work, ranks=2, tag="lammps_2ranks")
 d1, _ = engines.run("lammps", "maugis_loop/in.lammps", work, tag="lammps_1rank")
-engines.compare(c, rows(d2), rows(d1), "LAMMPS 2 ranks against 1", tol=0.0, names=COLS)
+engines.compare(c, engines.out(d2), engines.out(d1), "LAMMPS 2 ranks against 1", tol=0.0, names=COLS)
 
 rc, text = engines.run("lammps", "maugis_loop/in.lammps", work, variables={"z0": 0.0}, tag="bad_z0",
                        expect_error=True)

@@ -21,16 +21,7 @@ WALL_TANGENTIAL = (7, 8)   # below rollingVelocityMin, at rest: the tangential m
 
 def dump(folder):
     """Rows per step: atoms 1..11 by id, 15 values each."""
-    rows, cur = [], None
-    lines = open(os.path.join(folder, "forces.dump")).read().split("\n")
-    for k, line in enumerate(lines):
-        if line.startswith("ITEM: ATOMS"):
-            cur = []
-            for a in lines[k + 1:k + 1 + NATOMS]:
-                v = [float(x) for x in a.split()]
-                cur.append(v[1:])
-            rows.append(cur)
-    return rows
+    return engines.dump(folder, NATOMS)
 
 
 def flat(rows, lammps_wall_lever=False):

@@ -23,7 +23,6 @@ contact). Measured:
   value (the lever's delta/(2R) on the torque, and its effect on the slip
   velocity and so on the force).
 2 ranks against 1 (the spheres on both sides of x = 0); a bad coefficient."""
-import os
 import engines
 
 work, _, c = engines.start()
@@ -35,11 +34,8 @@ TANGENTIAL = [k for k in range(30) if k not in NORMAL]
 
 
 def dump(folder):
-    rows, lines = [], open(os.path.join(folder, "forces.dump")).read().split("\n")
-    for k, line in enumerate(lines):
-        if line.startswith("ITEM: ATOMS"):
-            rows.append([float(x) for a in lines[k + 1:k + 3] for x in a.split()[1:]])
-    return rows
+    """Per step both atoms' values, one row."""
+    return [a + b for a, b in engines.dump(folder, 2)]
 
 
 def lever_error(rows, lever):

@@ -49,9 +49,25 @@ def run(engine, deck, workdir, ranks=1, variables=None, tag="run", expect_error=
 
 
 def out(folder, name="out.txt"):
-    """A run's rows; LAMMPS' fix print also writes the set-up (step 0) row,
-    LIGGGHTS' does not: rows at time 0 are left out."""
-    return [r for r in table(os.path.join(folder, name)) if r[0] != 0.0]
+    """A run's rows (first column the time). LAMMPS' fix print also writes
+    each run's set-up row, LIGGGHTS' does not: rows at time 0 and a second
+    row of the same time (a later run's set-up) are left out."""
+    seen, rows = {0.0}, []
+    for r in table(os.path.join(folder, name)):
+        if r[0] not in seen:
+            seen.add(r[0])
+            rows.append(r)
+    return rows
+
+
+def dump(folder, natoms, name="forces.dump"):
+    """The snapshots of a `dump custom` whose first column is the atom id
+    (sorted by id): per snapshot, the natoms rows without the id."""
+    steps, lines = [], open(os.path.join(folder, name)).read().split("\n")
+    for k, line in enumerate(lines):
+        if line.startswith("ITEM: ATOMS"):
+            steps.append([[float(x) for x in a.split()[1:]] for a in lines[k + 1:k + 1 + natoms]])
+    return steps
 
 
 def compare(checks, got, want, what, tol=1e-10, floor=1e-6, columns=None, names=None):
