@@ -236,6 +236,9 @@ class Deck:
             self.dt = (float(w[1]), where)
         elif cmd == "pair_style" and len(w) >= 2 and w[1] == "gran":
             self.pair = (w, where)
+        elif cmd == "pair_style" and len(w) >= 2 and w[1] == "granular":
+            raise DeckError("%s: a LAMMPS deck (pair_style granular): the advisor reads LIGGGHTS decks (pair_style "
+                            "gran); the same laws' LAMMPS sub-models are in doc/lammps.md" % where)
         elif cmd == "fix" and len(w) >= 4:
             self._fix(w, where)
         elif cmd == "create_atoms" and len(w) >= 3:
