@@ -25,10 +25,8 @@ CASES = [
     ("hlsVariable_energy", {"claw": "hlsVariable", "cstiff": "energy"}, {"law": 3, "stiff": 3, "damp": 1.0}),
 ]
 for tag, vg, vl in CASES:
-    dg, _ = engines.run("liggghts", "classical_impact/in.liggghts", work, variables=vg, tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "classical_impact/in.lammps", work, variables=vl, tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "%s: LAMMPS dc/classical against LIGGGHTS classical" % tag, names=COLS)
+    g, l, _ = engines.side_by_side(c, "classical_impact", work, vg, vl, tag,
+        "%s: LAMMPS dc/classical against LIGGGHTS classical" % tag, names=COLS)
     last = l[-1]
     e = [last[2] / 0.3, last[5] / 1.0, last[8] / 3.0, last[13] / 0.5]
     c.true(all(0 < x < 1 for x in e), "%s: all rebound (restitution %s)" % (tag, ", ".join("%.4f" % x for x in e)))

@@ -15,21 +15,15 @@ W, R_WALL, R_PAIR = 0.5, 1e-3, 0.5e-3
 
 
 # w 0: Hertz (no force once apart)
-dg, _ = engines.run("liggghts", "jkr_pulloff/in.liggghts", work, variables={"w": 0.0}, tag="liggghts_w0")
-dl, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"w": 0.0}, tag="lammps_w0")
-g, l = engines.out(dg), engines.out(dl)
-engines.compare(c, l, g, "w 0: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic", names=COLS)
+g, l, _ = engines.side_by_side(c, "jkr_pulloff", work, {"w": 0.0}, {"w": 0.0}, "w0",
+    "w 0: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic", names=COLS)
 c.true(min(r[2] for r in l) >= 0.0 and all(r[2] == 0.0 for r in l if r[1] >= R_WALL),
        "w 0: no tensile force, none once apart")
 
 for alaw, law, e in [("jkr", 0, 1.0), ("jkr", 0, 0.5), ("dmt", 1, 1.0)]:
     tag = "%s_e%g" % (alaw, e)
-    dg, _ = engines.run("liggghts", "jkr_pulloff/in.liggghts", work, variables={"alaw": alaw, "e": e},
-                        tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "jkr_pulloff/in.lammps", work, variables={"law": law, "e": e},
-                        tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "%s e %g: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic" % (alaw, e), names=COLS)
+    g, l, _ = engines.side_by_side(c, "jkr_pulloff", work, {"alaw": alaw, "e": e}, {"law": law, "e": e}, tag,
+        "%s e %g: LAMMPS dc/jkr_elliptic against LIGGGHTS jkr_elliptic" % (alaw, e), names=COLS)
     # undamped, the largest tensile force is the load-controlled pull-off
     # force (DMT: at the last step before touch, less its 2 nm Hertz force)
     f, tol = (1.5, 1e-6) if alaw == "jkr" else (2.0, 1e-5)

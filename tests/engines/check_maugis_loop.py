@@ -14,13 +14,8 @@ R = 1e-3
 # z0 1e-5: Tabor parameters 0.39 (wall) and 0.31 (pair), Maugis-Dugdale;
 # tabor with z0 7e-7: 5.6 (wall: JKR) and 4.4 (pair: Maugis-Dugdale)
 for alaw, law, z0 in [("maugis", 2, 1e-5), ("tabor", 3, 7e-7)]:
-    dg, _ = engines.run("liggghts", "maugis_loop/in.liggghts", work, variables={"alaw": alaw, "z0": z0},
-                        tag="liggghts_" + alaw)
-    dl, _ = engines.run("lammps", "maugis_loop/in.lammps", work, variables={"law": law, "z0": z0},
-                        tag="lammps_" + alaw)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "%s z0 %g: LAMMPS dc/jkr_elliptic law %d against LIGGGHTS jkr_elliptic" % (alaw, z0, law),
-                    names=COLS)
+    g, l, _ = engines.side_by_side(c, "maugis_loop", work, {"alaw": alaw, "z0": z0}, {"law": law, "z0": z0}, alaw,
+        "%s z0 %g: LAMMPS dc/jkr_elliptic law %d against LIGGGHTS jkr_elliptic" % (alaw, z0, law), names=COLS)
     # energy the loop takes from the driver: - sum fz1 dz1 (wall), sum fx2 dx2 (pair)
     lw = -sum(0.5 * (a[2] + b[2]) * (b[1] - a[1]) for a, b in zip(l, l[1:]))
     lp = -sum(0.5 * (a[5] + b[5]) * (b[3] - a[3]) for a, b in zip(l, l[1:]))

@@ -18,11 +18,8 @@ MEM = {0: "profile", 1: "turningPoints"}
 
 
 def both(tag, lig, lmp, columns=None, tol=1e-10, what=None):
-    dg, _ = engines.run("liggghts", "oblique_impact/in.liggghts", work, variables=lig, tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "oblique_impact/in.lammps", work, variables=lmp, tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    w = engines.compare(c, l, g, what or tag, tol=tol, columns=columns, names=COLS)
-    return g, l, w
+    return engines.side_by_side(c, "oblique_impact", work, lig, lmp, tag, what or tag, tol=tol, columns=columns,
+                                names=COLS)
 
 
 for mem in (0, 1):

@@ -18,10 +18,8 @@ def restitution(rows):
 
 for v in [{}, {"e": 0.7}, {"kv": 0.6, "ch": 1.2, "ca": 50}]:
     tag = "_".join("%s%g" % kv for kv in sorted(v.items())) or "defaults"
-    dg, _ = engines.run("liggghts", "plastic_impact/in.liggghts", work, variables=v, tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "plastic_impact/in.lammps", work, variables=v, tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "%s: LAMMPS dc/jamari_ep against LIGGGHTS jamari_ep" % tag, names=COLS)
+    g, l, _ = engines.side_by_side(c, "plastic_impact", work, v, v, tag,
+        "%s: LAMMPS dc/jamari_ep against LIGGGHTS jamari_ep" % tag, names=COLS)
     eg, el = restitution(g), restitution(l)
     for k, (a, b) in enumerate(zip(el, eg)):
         c.rel(a, b, 1e-10, "%s: restitution of %s against LIGGGHTS" % (tag, ["wall 0.3 m/s", "wall 1 m/s",

@@ -22,10 +22,8 @@ CASES = [
     ("closed_form_plastic", {"ell": "on", "pl": "on", "n": 3.0, "h": 3e4}, {"form": 2, "pl": 1, "n": 3.0, "h": 3e4}),
 ]
 for tag, vg, vl in CASES:
-    dg, _ = engines.run("liggghts", "rough_impact/in.liggghts", work, variables=vg, tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "rough_impact/in.lammps", work, variables=vl, tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "%s: LAMMPS dc/gw_rough against LIGGGHTS gw_rough" % tag, names=COLS)
+    g, l, _ = engines.side_by_side(c, "rough_impact", work, vg, vl, tag,
+        "%s: LAMMPS dc/gw_rough against LIGGGHTS gw_rough" % tag, names=COLS)
     early = [r for r in l if r[1] > R and r[3] > 0.0]
     c.true(len(early) > 0 and l[-1][2] > 0 and l[-1][6] < 0 and l[-1][3] == 0.0,
            "%s: force before touch (%d steps, from %.3g um), rebound (e %.4f wall, %.4f pair)"

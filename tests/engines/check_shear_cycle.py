@@ -15,12 +15,8 @@ COLS = "time dy fy1 fx1 fz1 x3 fx3 fy3 fz3".split()
 E, NU, MU, R, D0, AMP = 1e9, 0.3, 0.5, 1e-3, 2e-6, 5e-7
 runs = {}
 for mem, name in ((0, "profile"), (1, "turningPoints")):
-    dg, _ = engines.run("liggghts", "shear_cycle/in.liggghts", work, variables={"memory": name},
-                        tag="liggghts_" + name)
-    dl, _ = engines.run("lammps", "shear_cycle/in.lammps", work, variables={"memory": mem}, tag="lammps_" + name)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "cmdMemory %s: LAMMPS dc/cmd_tangential against LIGGGHTS cmd_tangential" % name,
-                    names=COLS)
+    g, l, _ = engines.side_by_side(c, "shear_cycle", work, {"memory": name}, {"memory": mem}, name,
+        "cmdMemory %s: LAMMPS dc/cmd_tangential against LIGGGHTS cmd_tangential" % name, names=COLS)
     runs[name] = l
 
 # the wall sphere (R = 1 mm on a plane; the plane's material is the sphere's)

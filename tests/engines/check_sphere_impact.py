@@ -19,11 +19,8 @@ for lig, lmp, e, coef in LAWS:
     if coef is not None:
         v["coef"] = w["coef"] = coef
     tag = "%s_e%g" % (lig, e)
-    dg, _ = engines.run("liggghts", "sphere_impact/in.liggghts", work, variables=v, tag="liggghts_" + tag)
-    dl, _ = engines.run("lammps", "sphere_impact/in.lammps", work, variables=w, tag="lammps_" + tag)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "damping %s e %g: LAMMPS dc/hertz_elliptic + %s against LIGGGHTS hertz_elliptic"
-                    % (lig, e, lmp), names=COLS)
+    g, l, _ = engines.side_by_side(c, "sphere_impact", work, v, w, tag,
+        "damping %s e %g: LAMMPS dc/hertz_elliptic + %s against LIGGGHTS hertz_elliptic" % (lig, e, lmp), names=COLS)
     # the impacts happened: a rebound of the pair and of the wall sphere
     c.true(l[-1][4] > 0 and l[-1][7] > 0 and max(abs(r[5]) for r in l) > 0,
            "damping %s e %g: both impacts rebound (vx2 %.4g, vz3 %.4g)" % (lig, e, l[-1][4], l[-1][7]))

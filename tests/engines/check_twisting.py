@@ -17,11 +17,8 @@ COLS = "time wz3 tz3 wx2 tx1 tx2".split()
 E, NU, MU, R, D0 = 1e9, 0.3, 0.5, 1e-3, 2e-6
 runs = {}
 for mem, name in ((0, "profile"), (1, "turningPoints")):
-    dg, _ = engines.run("liggghts", "twisting/in.liggghts", work, variables={"memory": name}, tag="liggghts_" + name)
-    dl, _ = engines.run("lammps", "twisting/in.lammps", work, variables={"memory": mem}, tag="lammps_" + name)
-    g, l = engines.out(dg), engines.out(dl)
-    engines.compare(c, l, g, "cmdMemory %s: LAMMPS dc/cmd_twisting against LIGGGHTS cmdTwisting on" % name,
-                    names=COLS)
+    g, l, _ = engines.side_by_side(c, "twisting", work, {"memory": name}, {"memory": mem}, name,
+        "cmdMemory %s: LAMMPS dc/cmd_twisting against LIGGGHTS cmdTwisting on" % name, names=COLS)
     runs[name] = l
 
 l = runs["profile"]

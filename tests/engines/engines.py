@@ -90,3 +90,14 @@ def compare(checks, got, want, what, tol=1e-10, floor=1e-6, columns=None, names=
     checks.true(worst <= tol, "%s: worst per-step relative difference %.3g%s (tol %.3g, %d rows)"
                 % (what, worst, label, tol, len(want)))
     return worst
+
+
+def side_by_side(checks, scene, workdir, lig, lmp, tag, what, **kw):
+    """Runs scene/in.liggghts with the variables lig and scene/in.lammps
+    with lmp (folders liggghts_TAG, lammps_TAG) and compares their out.txt
+    (compare's keywords); returns (the LIGGGHTS rows, the LAMMPS rows, the
+    worst difference)."""
+    dg, _ = run("liggghts", scene + "/in.liggghts", workdir, variables=lig, tag="liggghts_" + tag)
+    dl, _ = run("lammps", scene + "/in.lammps", workdir, variables=lmp, tag="lammps_" + tag)
+    g, l = out(dg), out(dl)
+    return g, l, compare(checks, l, g, what, **kw)
