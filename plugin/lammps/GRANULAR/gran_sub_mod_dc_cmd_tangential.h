@@ -20,7 +20,7 @@
      (magtortwist) and keeps the twist's part of the law's history.
 
    The contact patch (semi-axes, major axis, friction load, formed) is the
-   project's normal sub-model's (dc_normal()->patch()); under a LAMMPS
+   project's normal sub-model's (DcContactReader); under a LAMMPS
    normal model the circle a = (R delta)^1/2, R the effective radius, with
    friction load its elastic force (not with a cohesive LAMMPS normal
    model). Mindlin's stiffness from the two bodies' materials as the

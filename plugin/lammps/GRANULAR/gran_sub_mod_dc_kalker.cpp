@@ -46,14 +46,13 @@ void GranSubModRollingDcKalker::coeffs_to_local()
 void GranSubModRollingDcKalker::init()
 {
   contact_.init(this, gm, error, true);
-  normal_ = contact_.normal();
   if (gm->tangential_model->name.rfind("dc/", 0) != 0)
     error->all(FLERR, "{} needs a tangential sub-model that hands the tangential force over while the contact "
                "rolls (dc/classical, ...), not {}", name, gm->tangential_model->name);
   dc_param_error err;
   if (dc_rolling_material_init(&contact_.pair, &material_, &err) != DC_OK)
     error->all(FLERR, "{}: the normal sub-model's E = {} and nu = {}: need E > 0 and nu in [0, 0.5]", name,
-               normal_->get_emod(), normal_->get_poiss());
+               contact_.normal()->get_emod(), contact_.normal()->get_poiss());
 }
 
 /* rolling_contact.h, RollingHandover::rolls on spheres: the speed bound of
@@ -110,7 +109,7 @@ bool GranSubModRollingDcKalker::rolls()
                "{} 1/s)", name, wall ? "wall" : "pair", dc_status_str(st), dv[0], dv[1], dv[2], dw[0], dw[1], dw[2]);
   dc_rolling_params prm = params_;
   prm.mu = 0.0;
-  acts_ = dc_rolling_acts_rolled(&prm, &normal_->patch(), &kin_, update->dt, rolled) != 0;
+  acts_ = dc_rolling_acts_rolled(&prm, &contact_.patch(gm), &kin_, update->dt, rolled) != 0;
   return acts_;
 }
 
@@ -137,7 +136,7 @@ void GranSubModRollingDcKalker::calculate_forces()
     step.inv_m += 1.0 / mj + crj * crj / Ij;
     step.inv_I += 1.0 / Ij;
   }
-  const dc_patch &p = normal_->patch();
+  const dc_patch &p = contact_.patch(gm);
   const double *n = gm->nx;
   dc_rolling_out out;
   const int st = dc_rolling_force_step(&params_, &material_, &p, n, &kin_, &step, &out);

@@ -66,7 +66,6 @@ class GranSubModRollingDcKalker : public GranSubModRolling, public GranSubModDcH
   dc_rolling_material material_ = {};
   dc_rolling_kin kin_ = {};
   DcContactReader contact_;
-  GranSubModDcNormal *normal_ = nullptr;
   bool decided_ = false, acts_ = false;
 };
 
